@@ -1,0 +1,136 @@
+//! @file A scene, parsed once from its file into typed structs; solvers never see the parser.
+#pragma once
+#include <array>
+#include <optional>
+#include <set>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "hvi/common/geometry.hpp"
+#include "hvi/common/vec2.hpp"
+#include "hvi/eos/eos.hpp"
+
+namespace hvi::cases {
+
+// All quantities are in the internal cm-g-us units of common/units.hpp.
+
+//! A named material: its EOS (which carries the reference density rho0).
+struct Material {
+  std::string name;
+  eos::Eos eos;
+  [[nodiscard]] double rho0() const { return eos::referenceDensity(eos); }
+};
+
+//! Disk in planar geometry, sphere in r-z (centre on the axis, x = 0).
+struct Disk {
+  Vec2 centre;
+  double radius = 0.0;
+};
+//! Axis-aligned rectangle [xmin, xmax] x [zmin, zmax]; a plate in r-z when xmin = 0.
+struct Rect {
+  double xmin = 0.0, xmax = 0.0, zmin = 0.0, zmax = 0.0;
+};
+//! Simple polygon, vertices counter-clockwise (the parser reorders clockwise input).
+struct Polygon {
+  std::vector<Vec2> vertices;
+};
+using Shape = std::variant<Disk, Rect, Polygon>;
+
+bool contains(const Shape& s, Vec2 p);
+double area(const Shape& s);  //!< planar area of the section, cm^2
+struct Box { double xmin, xmax, zmin, zmax; };
+Box boundingBox(const Shape& s);
+
+//! A body: a region of one material with a uniform initial state.
+struct Body {
+  std::string name;
+  int material = -1;        //!< index into Scene::materials
+  Shape shape;
+  Vec2 velocity;            //!< cm/us
+  double density = 0.0;     //!< g/cm^3 (defaults to the material's rho0)
+  double specificEnergy = 0.0;  //!< cm^2/us^2 (from `pressure` if the file gives that)
+};
+
+enum class Boundary { Outflow, Wall, Axis };
+//! Domain of the simulation, cm. Boundaries are indexed xmin, xmax, zmin, zmax.
+struct Domain {
+  double xmin = 0.0, xmax = 1.0, zmin = 0.0, zmax = 1.0;
+  std::array<Boundary, 4> boundary{Boundary::Outflow, Boundary::Outflow, Boundary::Outflow,
+                                   Boundary::Outflow};
+};
+
+enum class SolverKind { Sph, Tvd, Riemann };
+
+//! Effects a scene may name (METHOD.md section 6). A solver pays only for those named.
+enum class Effect {
+  ArtificialViscosity,  //!< Monaghan viscosity (SPH)
+  TensionCutoff,        //!< P = 0 in tension for Tillotson / Mie-Gruneisen
+  MassAdjustment,       //!< modified SPH mass iteration (absent: traditional SPH)
+  PhaseBookkeeping,     //!< solid / partly vaporised / vapour fractions
+  EnergyBudget,         //!< per-step kinetic / internal / total energy diagnostics
+  MaterialInterfaces,   //!< marker lines (TVD); a single-material scene need not name it
+  Features,             //!< debris-cloud features at each snapshot
+};
+std::string_view toString(Effect e);
+std::optional<Effect> effectFromString(std::string_view s);
+std::vector<std::string_view> allEffectNames();
+
+enum class Kernel { Gaussian, CubicSpline };
+enum class Lattice { Square, Hexagonal };
+
+struct SphParams {
+  double spacing = 0.01;   //!< particle spacing dx, cm
+  double hFactor = 1.0;    //!< h = hFactor * spacing
+  Kernel kernel = Kernel::Gaussian;
+  Lattice lattice = Lattice::Square;
+  double alpha = 1.0;      //!< Monaghan alpha_Pi
+  double beta = 2.0;       //!< Monaghan beta_Pi
+  double cfl = 0.3;
+  double massTolerance = 1e-9;     //!< |rho0/rho - 1| bound of the mass iteration
+  double deleteFraction = 1e-4;    //!< delete if m_i / max m < this
+  int maxMassIterations = 10000;
+};
+
+enum class Limiter { Minmod, VanLeer, Superbee };
+struct TvdParams {
+  double cellSize = 0.015;  //!< dx = dz, cm
+  Limiter limiter = Limiter::Minmod;
+  double cfl = 0.4;
+  double markerSpacing = 0.5;  //!< target marker spacing in cells
+  double vacuumDensity = 1e-6; //!< below this fraction of rho0 a cell is vacuum
+};
+
+//! Exact Riemann problem (the verification "solver"): left body and right body meet at `x0`
+//! along the direction `direction` (unit vector); sampled on a grid of `cells` cells.
+struct RiemannParams {
+  int cells = 400;
+  double interface = 0.5;
+};
+
+struct Output {
+  std::vector<double> times;  //!< us, ascending, within (tStart, tEnd]; tEnd is always written
+  bool hdf5 = true;
+  bool vtk = true;
+  double checkpointEvery = 0.0;  //!< wall seconds between checkpoints (0: at snapshots only)
+};
+
+struct Scene {
+  std::string path;          //!< file it came from
+  std::string title;
+  Geometry geometry = Geometry::Planar;
+  Domain domain;
+  std::vector<Material> materials;
+  std::vector<Body> bodies;
+  SolverKind solver = SolverKind::Sph;
+  SphParams sph;
+  TvdParams tvd;
+  RiemannParams riemann;
+  double tStart = 0.0, tEnd = 1.0;  //!< us
+  Output output;
+  std::set<Effect> effects;
+
+  [[nodiscard]] bool has(Effect e) const { return effects.count(e) != 0; }
+};
+
+}  // namespace hvi::cases

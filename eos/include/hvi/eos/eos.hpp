@@ -1,0 +1,40 @@
+//! @file One EOS interface for both solvers: a closed variant, dispatched once per material.
+#pragma once
+#include <string>
+#include <variant>
+
+#include "hvi/eos/ideal_gas.hpp"
+#include "hvi/eos/mie_gruneisen.hpp"
+#include "hvi/eos/state.hpp"
+#include "hvi/eos/tillotson.hpp"
+
+namespace hvi::eos {
+
+static_assert(EquationOfState<IdealGas>);
+static_assert(EquationOfState<Tillotson>);
+static_assert(EquationOfState<MieGruneisen>);
+
+//! Solvers call std::visit once per material outside their hot loops, so the loop body sees the
+//! concrete type and inlines it; no virtual call per particle or cell.
+using Eos = std::variant<Tillotson, IdealGas, MieGruneisen>;
+
+inline double pressure(const Eos& eos, double rho, double e) {
+  return std::visit([&](const auto& m) { return m.pressure(rho, e); }, eos);
+}
+inline EosState state(const Eos& eos, double rho, double e) {
+  return std::visit([&](const auto& m) { return m.state(rho, e); }, eos);
+}
+inline double referenceDensity(const Eos& eos) {
+  return std::visit([](const auto& m) { return m.referenceDensity(); }, eos);
+}
+//! "tillotson", "ideal_gas" or "mie_gruneisen".
+std::string kindName(const Eos& eos);
+
+//! Specific energy e such that P(rho, e) = p, by bracketed Newton iteration (monotone in e for
+//! every EOS here where dP/de > 0). Used to set up initial states given a pressure.
+double energyForPressure(const Eos& eos, double rho, double p);
+
+//! The study's aluminium (METHOD.md section 2 table), Tillotson with cut-off, cm-g-us units.
+Tillotson aluminiumStudy();
+
+}  // namespace hvi::eos
