@@ -1,7 +1,8 @@
 //! @file EOS presets and helpers common to every EOS.
 #include <cmath>
-#include <stdexcept>
+#include <fmt/format.h>
 
+#include "hvi/common/error.hpp"
 #include "hvi/eos/eos.hpp"
 
 namespace hvi::eos {
@@ -15,24 +16,73 @@ std::string kindName(const Eos& eos) {
   return std::visit(V{}, eos);
 }
 
+namespace {
+
+// Lowest specific energy where the EOS formula is defined and increasing in e, and whether it
+// can carry tension. Tillotson's w = 1 + e/(e0 delta^2) must stay positive: past its pole the
+// formula turns back and a bracket spanning it would converge to a spurious root.
+struct EnergyDomain {
+  double eMin;
+  bool tension;
+};
+EnergyDomain energyDomain(const Eos& eos, double rho) {
+  struct V {
+    double rho;
+    EnergyDomain operator()(const Tillotson& t) const {
+      const double d = rho / t.rho0;
+      return {-t.e0 * d * d, !t.tensionCutoff};
+    }
+    EnergyDomain operator()(const IdealGas&) const { return {0.0, false}; }
+    EnergyDomain operator()(const MieGruneisen& m) const { return {-1e300, !m.tensionCutoff}; }
+  };
+  return std::visit(V{rho}, eos);
+}
+
+}  // namespace
+
 double energyForPressure(const Eos& eos, double rho, double p) {
-  // P is increasing in e for every EOS here (dP/de > 0 away from the cut-off), so bracket and
-  // bisect with Newton steps where they stay inside the bracket.
-  double lo = 0.0, hi = 1.0;
-  auto f = [&](double e) { return pressure(eos, rho, e) - p; };
-  if (f(lo) > 0.0) {
-    lo = -1.0;
-    while (f(lo) > 0.0 && lo > -1e6) lo *= 2.0;
+  const EnergyDomain dom = energyDomain(eos, rho);
+  if (!(rho > 0.0) || !std::isfinite(p) || (p < 0.0 && !dom.tension)) {
+    throw InputError(fmt::format(
+        "energyForPressure: no {} state at rho {} with P = {} (needs rho > 0, and P >= 0 for a "
+        "material that carries no tension)",
+        kindName(eos), rho, p));
   }
-  while (f(hi) < 0.0 && hi < 1e12) hi *= 2.0;
+  // P is increasing in e on (eMin, inf) for every EOS here (dP/de > 0 there; 0 only where the
+  // cut-off holds P at 0), so bracket inside that interval, then bisect with Newton steps that
+  // stay inside the bracket.
+  auto f = [&](double e) { return pressure(eos, rho, e) - p; };
+  auto noState = [&] {
+    return InputError(fmt::format("energyForPressure: no {} state at rho {} reaches P = {}",
+                                  kindName(eos), rho, p));
+  };
+  double lo = 0.0, hi = 1.0;
+  if (f(lo) > 0.0) {
+    // Walk down: halving the gap to eMin (where the Tillotson formula falls to -inf), or
+    // doubling outwards when the formula has no lower bound in e.
+    const bool bounded = dom.eMin > -1e300;
+    for (int k = 0; f(lo) > 0.0; ++k) {
+      if (k > 1100) throw noState();
+      hi = lo;
+      lo = bounded ? dom.eMin * (1.0 - std::ldexp(1.0, -k - 1)) : -std::ldexp(1.0, k);
+    }
+  } else {
+    while (f(hi) < 0.0) {
+      if (hi > 1e12) throw noState();
+      lo = hi;
+      hi *= 2.0;
+    }
+  }
   double e = 0.5 * (lo + hi);
-  for (int it = 0; it < 200; ++it) {
+  for (int it = 0; it < 400; ++it) {
     const double fe = f(e);
+    if (fe == 0.0) return e;
     if (fe > 0.0) hi = e; else lo = e;
     const EosState s = state(eos, rho, e);
     double next = (s.dPdE > 0.0) ? e - fe / s.dPdE : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::abs(next - e) <= 1e-15 * std::max(1.0, std::abs(e))) return next;
+    const double tol = 1e-15 * std::max(1.0, std::abs(e));
+    if (std::abs(next - e) <= tol || hi - lo <= tol) return next;
     e = next;
   }
   return e;

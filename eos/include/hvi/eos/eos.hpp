@@ -32,6 +32,9 @@ std::string kindName(const Eos& eos);
 
 //! Specific energy e such that P(rho, e) = p, by bracketed Newton iteration (monotone in e for
 //! every EOS here where dP/de > 0). Used to set up initial states given a pressure.
+//! The bracket stays where the formula is defined (Tillotson: w > 0, so compressed states
+//! below the cold curve get the right e < 0). With a cut-off, p = 0 returns the lowest e with
+//! P > 0 beyond it. Throws hvi::InputError for p < 0 in a material that carries no tension.
 double energyForPressure(const Eos& eos, double rho, double p);
 
 //! The study's aluminium (METHOD.md section 2 table), Tillotson with cut-off, cm-g-us units.

@@ -8,8 +8,21 @@
 
 namespace hvi::io {
 
+//! Value of the root attribute `format` of an hvi HDF5 snapshot, and the layout version this
+//! build writes and reads (docs/output.md).
+inline constexpr const char* hdf5Format = "hvi-snapshot";
+inline constexpr int hdf5FormatVersion = 1;
+
+//! Checks that a snapshot can be written: field names non-empty, unique, without '/', each
+//! field's data holding count() * components values, a grid with positive size and spacing.
+//! Throws std::invalid_argument naming the offending field (a solver bug, not bad input).
+//! writeHdf5 and writeVtk call it before touching any file.
+void validateSnapshot(const Snapshot& snap);
+
 //! Writes one snapshot as HDF5 (layout in docs/output.md), atomically: a killed run leaves
 //! the previous file or the complete new one. `sceneToml` is the resolved scene.
+//! Throws std::invalid_argument (see validateSnapshot) or std::runtime_error naming the file
+//! and the failed HDF5 operation; the previous file is then untouched.
 void writeHdf5(const std::filesystem::path& file, const Snapshot& snap, const std::string& sceneToml);
 
 //! Reads a snapshot written by writeHdf5 (for compare and tests). Throws hvi::InputError
@@ -18,7 +31,7 @@ Snapshot readHdf5(const std::filesystem::path& file, std::string* sceneToml = nu
 
 //! Writes VTK XML with the VTK library: `<stem>.vtu` (particles as vertices) or `<stem>.vti`
 //! (grid, cell data), and `<stem>_markers.vtp` when the snapshot has marker lines. Atomic.
-//! Returns the files written.
+//! Returns the files written. Throws like writeHdf5.
 std::vector<std::filesystem::path> writeVtk(const std::filesystem::path& stem, const Snapshot& snap);
 
 //! A ParaView time series (.pvd), rewritten atomically after each added snapshot so that it is
