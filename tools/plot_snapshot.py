@@ -48,11 +48,20 @@ def load(h5path, field):
     return d
 
 
+def marker_size(ax, d):
+    """Scatter size (points^2) that makes each particle a dot about one particle spacing wide."""
+    spacing = float(np.median(d["h"])) if "h" in d and len(d["h"]) else 0.01
+    xs = np.concatenate([d["x"], -d["x"]]) if d["geometry"] == "rz" else d["x"]
+    extent = max(float(np.ptp(xs)), float(np.ptp(d["z"])), spacing)
+    axes_points = 72.0 * min(ax.figure.get_size_inches()) * 0.8
+    return max(0.05, (spacing / extent * axes_points) ** 2)
+
+
 def draw(ax, d, vmin=None, vmax=None, cmap="viridis", mirror=True):
     v = d["values"]
     if d["kind"] == "particles":
         x, z = d["x"], d["z"]
-        size = 0.5
+        size = marker_size(ax, d)
         sc = ax.scatter(x, z, c=v, s=size, cmap=cmap, vmin=vmin, vmax=vmax, linewidths=0)
         if d["geometry"] == "rz" and mirror:
             ax.scatter(-x, z, c=v, s=size, cmap=cmap, vmin=vmin, vmax=vmax, linewidths=0)

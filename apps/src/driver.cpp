@@ -171,6 +171,16 @@ class Run {
   std::unique_ptr<Solver> solver_;
 };
 
+//! A run killed while writing leaves its temporary file (".name.tmp<pid>.ext", see
+//! common/atomic_file.cpp); the final names are intact, so the leftovers are only clutter.
+void removeStaleTemporaries(const fs::path& dir) {
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    const std::string n = e.path().filename().string();
+    if (n.size() > 1 && n[0] == '.' && n.find(".tmp") != std::string::npos) fs::remove(e.path(), ec);
+  }
+}
+
 }  // namespace
 
 int runScene(const RunOptions& opts) {
@@ -183,6 +193,7 @@ int runScene(const RunOptions& opts) {
   }
   try {
     fs::create_directories(opts.out);
+    removeStaleTemporaries(opts.out);
     writeTextAtomically(opts.out / "scene.toml", cases::toToml(scene));
     installStopHandlers();
     Run run(opts, std::move(scene));

@@ -1,0 +1,182 @@
+//! @file End-to-end tests of `hvi run`: outputs, bad input, stop and restart, signals, failures.
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "hvi/apps/driver.hpp"
+#include "hvi/common/stop_flag.hpp"
+#include "hvi/io/output.hpp"
+
+namespace fs = std::filesystem;
+using namespace hvi;
+using nlohmann::json;
+
+namespace {
+
+fs::path freshDir(const std::string& name) {
+  fs::path d = fs::path(HVI_BINARY_DIR) / "test_out" / "app" / name;
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+fs::path scene(const std::string& name) {
+  return fs::path(HVI_SOURCE_DIR) / "cases" / "scenes" / (name + ".toml");
+}
+json readJson(const fs::path& p) {
+  std::ifstream f(p);
+  return json::parse(f);
+}
+std::vector<fs::path> snapshots(const fs::path& dir, const std::string& prefix = "snap_") {
+  std::vector<fs::path> v;
+  for (auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == ".h5" && e.path().filename().string().rfind(prefix, 0) == 0)
+      v.push_back(e.path());
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+// A few-second impact: the default scene (coarse variant 2), coarser still and shorter.
+app::RunOptions smallImpact(const std::string& solver, const fs::path& out) {
+  app::RunOptions o;
+  o.scene = scene("default");
+  o.out = out;
+  o.quiet = true;
+  o.overrides = {"solver=" + solver, "sph.spacing=0.1 cm", "tvd.cell_size=0.1 cm",
+                 "time.end=0.6 us", "output.times=[\"0.3 us\", \"0.6 us\"]"};
+  return o;
+}
+
+}  // namespace
+
+TEST(Driver, RiemannSceneWritesEveryOutput) {
+  const fs::path out = freshDir("riemann");
+  app::RunOptions o;
+  o.scene = scene("sod_x");
+  o.out = out;
+  o.quiet = true;
+  ASSERT_EQ(app::runScene(o), app::kOk);
+  for (const char* f : {"scene.toml", "hvi.pvd", "summary.json", "timeseries.json", "checkpoint.bin"})
+    EXPECT_TRUE(fs::exists(out / f)) << f;
+  const auto snaps = snapshots(out);
+  ASSERT_EQ(snaps.size(), 3u);  // t = 0, 0.1, 0.2 us
+  const json s = readJson(out / "summary.json");
+  EXPECT_EQ(s["status"], "completed");
+  EXPECT_DOUBLE_EQ(s["final_time_us"].get<double>(), 0.2);
+  for (const char* k : {"wall_seconds", "steps", "updates_per_second_per_core", "conservation",
+                        "threads", "work_items"})
+    EXPECT_TRUE(s.contains(k)) << k;
+  EXPECT_EQ(readJson(out / "timeseries.json")["snapshots"].size(), 3u);
+
+  const Snapshot last = io::readHdf5(snaps.back());
+  EXPECT_DOUBLE_EQ(last.time, 0.2);
+  const Field* rho = last.find("density");
+  ASSERT_NE(rho, nullptr);
+  ASSERT_EQ(rho->data.size(), 400u);
+  // Far from the diaphragm the gas is undisturbed at t = 0.2 us: the rarefaction head moves at
+  // c_L = 1.18 cm/us (to x = 0.26 cm) and the shock at 1.75 cm/us (to x = 0.85 cm).
+  EXPECT_DOUBLE_EQ(rho->data[10], 1.0);
+  EXPECT_DOUBLE_EQ(rho->data[395], 0.125);
+}
+
+TEST(Driver, BadSceneIsRejectedBeforeAnythingRuns) {
+  const fs::path out = freshDir("bad");
+  const fs::path bad = out / "bad.toml";
+  std::ifstream in(scene("default"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto pos = text.find("radius = \"0.5 cm\"");
+  ASSERT_NE(pos, std::string::npos);
+  text.replace(pos, 17, "radius = \"-0.5 cm\"");
+  std::ofstream(bad) << text;
+  app::RunOptions o;
+  o.scene = bad;
+  o.out = out / "run";
+  o.quiet = true;
+  EXPECT_EQ(app::runScene(o), app::kBadInput);
+  EXPECT_FALSE(fs::exists(o.out / "summary.json"));
+  EXPECT_FALSE(fs::exists(o.out)) << "nothing may be written for a scene that does not validate";
+}
+
+class RestartTest : public ::testing::TestWithParam<std::string> {};
+
+// A run stopped after a few steps and restarted from its checkpoint must end in exactly the
+// state of an uninterrupted run: the checkpoint holds the whole state bit for bit, and the
+// solvers are deterministic for a fixed thread count (no order-dependent reductions in the
+// dynamics).
+TEST_P(RestartTest, StopAndRestartIsBitForBit) {
+  const std::string solver = GetParam();
+  const fs::path whole = freshDir("restart_whole_" + solver);
+  const fs::path split = freshDir("restart_split_" + solver);
+  ASSERT_EQ(app::runScene(smallImpact(solver, whole)), app::kOk);
+
+  auto first = smallImpact(solver, split);
+  first.stopAfterSteps = 7;
+  ASSERT_EQ(app::runScene(first), app::kInterrupted);
+  clearStop();
+  EXPECT_EQ(readJson(split / "summary.json")["status"], "interrupted");
+  auto second = smallImpact(solver, split);
+  second.restart = true;
+  ASSERT_EQ(app::runScene(second), app::kOk);
+
+  const auto a = snapshots(whole), b = snapshots(split);
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_GE(a.size(), 3u);
+  const Snapshot sa = io::readHdf5(a.back()), sb = io::readHdf5(b.back());
+  EXPECT_EQ(sa.step, sb.step);
+  EXPECT_EQ(sa.time, sb.time);
+  ASSERT_EQ(sa.fields.size(), sb.fields.size());
+  for (std::size_t f = 0; f < sa.fields.size(); ++f) {
+    ASSERT_EQ(sa.fields[f].name, sb.fields[f].name);
+    ASSERT_EQ(sa.fields[f].data.size(), sb.fields[f].data.size());
+    for (std::size_t i = 0; i < sa.fields[f].data.size(); ++i)
+      ASSERT_EQ(sa.fields[f].data[i], sb.fields[f].data[i]) << sa.fields[f].name << "[" << i << "]";
+  }
+  EXPECT_EQ(sa.positions.size(), sb.positions.size());
+  for (std::size_t i = 0; i < sa.positions.size(); ++i) ASSERT_EQ(sa.positions[i], sb.positions[i]);
+  EXPECT_EQ(readJson(whole / "timeseries.json")["snapshots"].size(),
+            readJson(split / "timeseries.json")["snapshots"].size());
+}
+INSTANTIATE_TEST_SUITE_P(BothSolvers, RestartTest, ::testing::Values("sph", "tvd"));
+
+TEST(Driver, RestartRefusesAnotherScene) {
+  const fs::path out = freshDir("restart_other");
+  auto first = smallImpact("tvd", out);
+  first.stopAfterSteps = 2;
+  ASSERT_EQ(app::runScene(first), app::kInterrupted);
+  clearStop();
+  auto second = smallImpact("tvd", out);
+  second.restart = true;
+  second.overrides.push_back("tvd.cfl=0.2");
+  EXPECT_EQ(app::runScene(second), app::kBadInput);
+}
+
+// SIGINT through the real binary: the run stops between steps, writes a checkpoint, exits 130.
+TEST(Driver, SigintWritesCheckpointAndExits130) {
+  const fs::path out = freshDir("sigint");
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const std::string sc = scene("default").string(), o = out.string();
+    ::freopen("/dev/null", "w", stderr);
+    execl(HVI_EXE, HVI_EXE, "run", sc.c_str(), "--out", o.c_str(), "--quiet",
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // Wait until the first snapshot exists, so the signal arrives while it is stepping.
+  for (int i = 0; i < 600 && snapshots(out).empty(); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  ASSERT_EQ(::kill(pid, SIGINT), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  EXPECT_TRUE(fs::exists(out / "checkpoint.bin"));
+  EXPECT_EQ(readJson(out / "summary.json")["status"], "interrupted");
+}

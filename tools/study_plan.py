@@ -1,0 +1,139 @@
+"""The study's problems and the runs that sweep them (which scene, which --set overrides)."""
+import os
+
+import study_exact as ex
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SCENES = os.path.join(ROOT, "cases", "scenes")
+
+# A 1-D problem runs in a strip STRIP_ROWS cells (particles) high with walls above and below: the
+# same count at every resolution, so the work grows like a 1-D code's (h^-2) and both methods
+# carry the same number of rows.
+STRIP_ROWS = 8
+
+SPH_EFFECTS_1D = ["artificial_viscosity", "mass_adjustment"]
+
+PROBLEMS = {
+    "sod": {
+        "kind": "exact", "title": "Sod shock tube, t = 0.2 us (exact: Toro's Riemann solution)",
+        "ylabel": "relative L1 density error, x in [0.1, 0.9] cm",
+        "scene": os.path.join(SCENES, "sod_x.toml"), "bodies": 2, "end": 0.2,
+        "window": (0.1, 0.9), "exact": ("python", lambda x, t: ex.sod_density(x, t)),
+        "effects": {"tvd": [], "sph": SPH_EFFECTS_1D},
+    },
+    "al_tube": {
+        "kind": "exact",
+        "title": "Tillotson Al impact tube, 7 km/s, t = 0.5 us (exact: two shocks, Hugoniot)",
+        "ylabel": "relative L1 density error, x in [0.4, 1.9] cm",
+        "scene": os.path.join(SCENES, "al_impact_tube.toml"), "bodies": 2, "end": 0.5,
+        "window": (0.4, 1.9), "exact": ("python", lambda x, t: ex.al_tube_density(x, t)),
+        "effects": {"tvd": ["tension_cutoff"], "sph": SPH_EFFECTS_1D + ["tension_cutoff"]},
+    },
+    "noh_planar": {
+        "kind": "exact", "title": "Planar Noh, gamma 5/3, u0 = 10 km/s, t = 0.6 us (exact: closed form)",
+        "ylabel": "relative L1 density error, x in [0, 0.3] cm",
+        "scene": os.path.join(SCENES, "study", "noh_planar.toml"), "bodies": 1, "end": 0.6,
+        "window": (0.0, 0.3), "exact": ("python", lambda x, t: ex.noh_density(x, t, 0)),
+        "effects": {"tvd": [], "sph": SPH_EFFECTS_1D},
+    },
+    "variant2": {
+        "kind": "impact",
+        "title": "Variant 2 (rod 1 cm, 6.18 km/s, 0.4 cm Al plate), coarse scene, t = end",
+        "ylabel": "relative L1 density difference over material cells",
+        "end": 5.0,
+        "methods": {
+            ("tvd", "minmod"): os.path.join(SCENES, "variant2_tvd_coarse.toml"),
+            ("sph", "modified"): os.path.join(SCENES, "variant2_sph_modified_coarse.toml"),
+            ("sph", "traditional"): os.path.join(SCENES, "variant2_sph_traditional_coarse.toml"),
+        },
+    },
+}
+
+# Errors at which the cost of each method is read off (interpolated between measured points).
+ACCURACY_TARGETS = {"sod": [0.03, 0.01], "al_tube": [0.03, 0.01], "noh_planar": [0.05, 0.02],
+                    "variant2": [0.1, 0.05], "variant2_vs_tvd": [0.15, 0.1]}
+
+SWEEPS = {
+    "full": {
+        "res_1d": [0.02, 0.01, 0.005, 0.0025, 0.00125],
+        "tvd_1d": ["minmod", "van_leer", "superbee"],
+        # (kernel, alpha): the default, the other kernel, and alpha halved and doubled.
+        "sph_1d": [("gaussian", 1.0), ("cubic_spline", 1.0), ("gaussian", 0.5), ("gaussian", 2.0)],
+        "res_impact": [0.1, 0.08, 0.06, 0.04], "ref_impact": 0.03, "end_impact": 5.0,
+    },
+    "quick": {
+        "res_1d": [0.02, 0.01, 0.005],
+        "tvd_1d": ["minmod", "superbee"],
+        "sph_1d": [("gaussian", 1.0)],
+        "res_impact": [0.12, 0.1], "ref_impact": 0.08, "end_impact": 1.0,
+        "impact_methods": [("tvd", "minmod"), ("sph", "modified")],
+    },
+}
+
+
+def cm(v):
+    return f"{v:.10g} cm"
+
+
+def toml_list(items):
+    return "[" + ", ".join(f'"{i}"' for i in items) + "]"
+
+
+def _run(problem, solver, option, h, scene, sets, end, cost, out, reference=False):
+    name = f"{solver}-{option.replace(' ', '').replace('=', '')}-h{h:g}"
+    return {"problem": problem, "solver": solver, "option": option, "h": h, "scene": scene,
+            "sets": sets, "end": end, "cost_guess": cost, "reference": reference,
+            "method": f"{solver} {option}", "name": name,
+            "dir": os.path.join(out, problem, name)}
+
+
+def runs_1d(problem, sw, out):
+    p = PROBLEMS[problem]
+    runs = []
+    for h in sw["res_1d"]:
+        height = STRIP_ROWS * h
+        geom = [f"domain.z=[\"0 cm\", \"{cm(height)}\"]", f'output.times=["{p["end"]:g} us"]',
+                "output.vtk=false", f'time.end="{p["end"]:g} us"']
+        geom += [f'bodies[{i}].z=["0 cm", "{cm(height)}"]' for i in range(p["bodies"])]
+        cells = STRIP_ROWS / h
+        for lim in sw["tvd_1d"]:
+            sets = geom + ["solver=tvd", f'tvd.cell_size="{cm(h)}"', f"tvd.limiter={lim}",
+                           "effects=" + toml_list(p["effects"]["tvd"])]
+            runs.append(_run(problem, "tvd", lim, h, p["scene"], sets, p["end"], cells / h, out))
+        for kernel, alpha in sw["sph_1d"]:
+            sets = geom + ["solver=sph", f'sph.spacing="{cm(h)}"', f"sph.kernel={kernel}",
+                           f"sph.alpha={alpha:g}", "effects=" + toml_list(p["effects"]["sph"])]
+            runs.append(_run(problem, "sph", f"{kernel} a={alpha:g}", h, p["scene"], sets,
+                             p["end"], 5 * cells / h, out))
+    return runs
+
+
+def runs_impact(problem, sw, out):
+    p = PROBLEMS[problem]
+    end = sw["end_impact"]
+    methods = sw.get("impact_methods", list(p["methods"]))
+    runs = []
+    for solver, option in methods:
+        scene = p["methods"][(solver, option)]
+        for h in sw["res_impact"] + [sw["ref_impact"]]:
+            key = "tvd.cell_size" if solver == "tvd" else "sph.spacing"
+            sets = [f'{key}="{cm(h)}"', f'time.end="{end:g} us"',
+                    f'output.times=["{end:g} us"]', "output.vtk=false"]
+            runs.append(_run(problem, solver, option, h, scene, sets, end,
+                             (3 if solver == "sph" else 1) * h ** -3, out,
+                             reference=(h == sw["ref_impact"])))
+    return runs
+
+
+def plan_runs(problems, quick, out):
+    sw = SWEEPS["quick" if quick else "full"]
+    runs = []
+    for problem in problems:
+        if problem not in PROBLEMS:
+            raise SystemExit(f"study: unknown problem {problem!r}; known: {', '.join(PROBLEMS)}")
+        if PROBLEMS[problem]["kind"] == "exact":
+            runs += runs_1d(problem, sw, out)
+        else:
+            runs += runs_impact(problem, sw, out)
+            PROBLEMS[problem]["end"] = sw["end_impact"]
+    return runs
