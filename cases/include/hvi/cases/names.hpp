@@ -1,0 +1,34 @@
+//! @file Names of the scene's enumerations as written in scene files, and which solver supports
+//! which effect.
+#pragma once
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "hvi/cases/scene.hpp"
+
+namespace hvi::cases {
+
+// Each list is in enum order: static_cast<Enum>(index) is the value of names()[index].
+std::span<const std::string_view> solverNames();    //!< sph, tvd, riemann
+std::span<const std::string_view> geometryNames();  //!< planar, rz
+std::span<const std::string_view> boundaryNames();  //!< outflow, wall, axis
+std::span<const std::string_view> kernelNames();    //!< gaussian, cubic_spline
+std::span<const std::string_view> latticeNames();   //!< square, hexagonal
+std::span<const std::string_view> limiterNames();   //!< minmod, van_leer, superbee
+
+std::string_view toString(SolverKind s);
+std::string_view toString(Boundary b);
+std::string_view toString(Kernel k);
+std::string_view toString(Lattice l);
+std::string_view toString(Limiter l);
+
+//! Effects a solver implements; a scene naming any other effect for that solver is rejected.
+//! SPH: artificial_viscosity, tension_cutoff, mass_adjustment, phase_bookkeeping,
+//! energy_budget, features. TVD: tension_cutoff, material_interfaces, phase_bookkeeping,
+//! energy_budget, features. Riemann (exact solution): energy_budget.
+std::vector<Effect> supportedEffects(SolverKind s);
+bool supports(SolverKind s, Effect e);
+
+}  // namespace hvi::cases

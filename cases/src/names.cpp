@@ -1,0 +1,55 @@
+//! @file Scene-file names of the enumerations, and the effect support of each solver.
+#include "hvi/cases/names.hpp"
+
+#include <algorithm>
+#include <array>
+
+namespace hvi::cases {
+namespace {
+constexpr std::array<std::string_view, 3> kSolvers{"sph", "tvd", "riemann"};
+constexpr std::array<std::string_view, 2> kGeometries{"planar", "rz"};
+constexpr std::array<std::string_view, 3> kBoundaries{"outflow", "wall", "axis"};
+constexpr std::array<std::string_view, 2> kKernels{"gaussian", "cubic_spline"};
+constexpr std::array<std::string_view, 2> kLattices{"square", "hexagonal"};
+constexpr std::array<std::string_view, 3> kLimiters{"minmod", "van_leer", "superbee"};
+
+template <class E, std::size_t N>
+std::string_view nameOf(const std::array<std::string_view, N>& names, E e) {
+  const auto i = static_cast<std::size_t>(e);
+  return i < N ? names[i] : std::string_view("?");
+}
+}  // namespace
+
+std::span<const std::string_view> solverNames() { return kSolvers; }
+std::span<const std::string_view> geometryNames() { return kGeometries; }
+std::span<const std::string_view> boundaryNames() { return kBoundaries; }
+std::span<const std::string_view> kernelNames() { return kKernels; }
+std::span<const std::string_view> latticeNames() { return kLattices; }
+std::span<const std::string_view> limiterNames() { return kLimiters; }
+
+std::string_view toString(SolverKind s) { return nameOf(kSolvers, s); }
+std::string_view toString(Boundary b) { return nameOf(kBoundaries, b); }
+std::string_view toString(Kernel k) { return nameOf(kKernels, k); }
+std::string_view toString(Lattice l) { return nameOf(kLattices, l); }
+std::string_view toString(Limiter l) { return nameOf(kLimiters, l); }
+
+std::vector<Effect> supportedEffects(SolverKind s) {
+  switch (s) {
+    case SolverKind::Sph:
+      return {Effect::ArtificialViscosity, Effect::TensionCutoff, Effect::MassAdjustment,
+              Effect::PhaseBookkeeping,    Effect::EnergyBudget,  Effect::Features};
+    case SolverKind::Tvd:
+      return {Effect::TensionCutoff, Effect::MaterialInterfaces, Effect::PhaseBookkeeping,
+              Effect::EnergyBudget, Effect::Features};
+    case SolverKind::Riemann:
+      return {Effect::EnergyBudget};
+  }
+  return {};
+}
+
+bool supports(SolverKind s, Effect e) {
+  const auto v = supportedEffects(s);
+  return std::find(v.begin(), v.end(), e) != v.end();
+}
+
+}  // namespace hvi::cases

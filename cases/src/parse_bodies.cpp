@@ -1,0 +1,186 @@
+//! @file [[bodies]]: name, material, shape (disk / rect / polygon) and the initial state.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "detail/parse.hpp"
+#include "detail/polygon.hpp"
+#include "detail/schema.hpp"
+#include "hvi/common/error.hpp"
+
+namespace hvi::cases::detail {
+namespace {
+
+std::span<const std::string_view> shapeKeys(std::size_t shape) {
+  switch (shape) {
+    case 0:
+      return kDiskKeys;
+    case 1:
+      return kRectKeys;
+    default:
+      return kPolygonKeys;
+  }
+}
+
+// A key of another shape gets a message naming that shape; anything else the nearest key.
+void rejectKeys(const TableReader& b, std::size_t shape) {
+  std::vector<std::string_view> known(kBodyCommonKeys.begin(), kBodyCommonKeys.end());
+  const auto own = shapeKeys(shape);
+  known.insert(known.end(), own.begin(), own.end());
+  for (const auto& [k, v] : b.table()) {
+    const std::string_view key = k.str();
+    if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+    for (std::size_t s = 0; s < kShapeNames.size(); ++s) {
+      const auto other = shapeKeys(s);
+      if (std::find(other.begin(), other.end(), key) != other.end())
+        b.fail(key,
+               "belongs to shape = \"" + std::string(kShapeNames[s]) + "\", not \"" +
+                   std::string(kShapeNames[shape]) + "\"",
+               "for a " + std::string(kShapeNames[shape]) + ": " + join(own));
+    }
+  }
+  b.rejectUnknown(known);
+}
+
+Shape readPolygon(const TableReader& b) {
+  const std::string path = b.keyPath("vertices");
+  const toml::node& n = b.require("vertices", "[[x, z], ...] with at least 3 vertices");
+  const auto& arr =
+      readArray(b.ctx(), n, path, 0, "[[\"x\", \"z\"], ...] with at least 3 vertices");
+  if (arr.size() < 3)
+    fail(b.ctx(), &n, path,
+         "a polygon needs at least 3 vertices, got " + std::to_string(arr.size()),
+         "3 or more [x, z] pairs");
+  Polygon poly;
+  for (std::size_t i = 0; i < arr.size(); ++i)
+    poly.vertices.push_back(
+        readVec2(b.ctx(), *arr.get(i), path + "[" + std::to_string(i) + "]", Dimension::Length));
+  std::string why;
+  if (!makeSimpleCounterClockwise(poly, why))
+    fail(b.ctx(), &n, path, why, "a simple polygon (no crossing or repeated edges), non-zero area");
+  return poly;
+}
+
+Shape readShape(const TableReader& b, std::size_t shape) {
+  switch (shape) {
+    case 0: {
+      Disk d;
+      d.centre = readVec2(b.ctx(), b.require("centre", "[x, z] such as [\"0 cm\", \"1 cm\"]"),
+                          b.keyPath("centre"), Dimension::Length);
+      d.radius = b.quantity("radius", Dimension::Length);
+      b.check(d.radius > 0.0, "radius", "must be > 0", "a length > 0");
+      return d;
+    }
+    case 1: {
+      const auto [x0, x1] =
+          readInterval(b.ctx(), b.require("x", "[min, max] such as [\"0 cm\", \"1 cm\"]"),
+                       b.keyPath("x"), Dimension::Length);
+      const auto [z0, z1] =
+          readInterval(b.ctx(), b.require("z", "[min, max] such as [\"0 cm\", \"1 cm\"]"),
+                       b.keyPath("z"), Dimension::Length);
+      return Rect{x0, x1, z0, z1};
+    }
+    default:
+      return readPolygon(b);
+  }
+}
+
+std::size_t materialIndex(const TableReader& b, const Scene& scene) {
+  const std::string name = b.string("material");
+  for (std::size_t i = 0; i < scene.materials.size(); ++i)
+    if (scene.materials[i].name == name) return i;
+  std::vector<std::string_view> defined;
+  for (const auto& m : scene.materials) defined.push_back(m.name);
+  std::string problem = "material \"" + name + "\" is not defined in [materials]";
+  if (auto near = closestKey(name, defined); !near.empty())
+    problem += " (did you mean \"" + std::string(near) + "\"?)";
+  b.fail("material", problem, join(defined));
+}
+
+// Lowest specific energy where the EOS is defined: an ideal gas has no negative energy;
+// Tillotson needs w = 1 + e / (e0 delta^2) > 0; compressed states at P = 0 lie below e = 0.
+double lowestEnergy(const eos::Eos& eos, double rho) {
+  if (std::holds_alternative<eos::IdealGas>(eos)) return 0.0;
+  if (const auto* t = std::get_if<eos::Tillotson>(&eos)) {
+    const double d = rho / t->rho0;
+    return -t->e0 * d * d;
+  }
+  return -std::numeric_limits<double>::infinity();
+}
+
+// The initial specific energy: given, from a pressure through the EOS, or zero.
+double initialEnergy(const TableReader& b, const eos::Eos& eos, double rho) {
+  if (b.has("pressure") && b.has("specific_energy"))
+    b.fail("pressure", "give either pressure or specific_energy, not both",
+           "pressure or specific_energy");
+  const double eMin = lowestEnergy(eos, rho);
+  if (b.has("specific_energy")) {
+    const double e = b.quantity("specific_energy", Dimension::SpecificEnergy);
+    const bool open = std::holds_alternative<eos::Tillotson>(eos);  // w = 0 is a pole
+    b.check(open ? e > eMin : e >= eMin, "specific_energy",
+            "below where the " + eos::kindName(eos) + " EOS is defined at this density",
+            std::string("a specific energy ") + (open ? "> " : ">= ") + shortNumber(eMin) +
+                " cm^2/us^2");
+    return e;
+  }
+  if (!b.has("pressure")) return 0.0;
+  const double p = b.quantity("pressure", Dimension::Pressure);
+  const std::string allowed = "a pressure the EOS reaches at this density, or specific_energy";
+  double e = 0.0;
+  try {
+    e = eos::energyForPressure(eos, rho, p);
+  } catch (const InputError& err) {
+    // The EOS library names the state; the scene file names where it came from.
+    b.fail("pressure", err.what(), allowed);
+  }
+  // The root finder converges to round-off; a residual above 1e-6 relative means no e reaches p
+  // (e.g. tension under the cut-off).
+  const double pe = eos::pressure(eos, rho, e);
+  const bool reached =
+      std::isfinite(e) && e >= eMin && std::abs(pe - p) <= 1e-6 * std::max(std::abs(p), 1e-12);
+  b.check(reached, "pressure",
+          "no specific energy gives this pressure at density " + shortNumber(rho) +
+              " g/cm^3 with " + eos::kindName(eos),
+          allowed);
+  return e;
+}
+
+}  // namespace
+
+void parseBodies(const TableReader& root, Scene& scene, Sources& sources) {
+  const toml::node& n = root.require("bodies", "one or more [[bodies]] tables");
+  const auto& arr = readArray(root.ctx(), n, "bodies", 0, "[[bodies]] tables");
+  if (arr.empty()) fail(root.ctx(), &n, "bodies", "no body defined", "one or more [[bodies]]");
+  for (std::size_t i = 0; i < arr.size(); ++i) {
+    const std::string path = "bodies[" + std::to_string(i) + "]";
+    const toml::table* t = arr.get(i)->as_table();
+    if (t == nullptr)
+      fail(root.ctx(), arr.get(i), path,
+           "expected a table, got " + std::string(typeName(*arr.get(i))), "[[bodies]] tables");
+    const TableReader b(root.ctx(), *t, path);
+    const std::size_t shape = b.choice("shape", kShapeNames);
+    rejectKeys(b, shape);
+
+    Body body;
+    body.name = b.string("name");
+    b.check(!body.name.empty(), "name", "must not be empty", "a non-empty name");
+    for (std::size_t j = 0; j < scene.bodies.size(); ++j)
+      b.check(scene.bodies[j].name != body.name, "name",
+              "\"" + body.name + "\" is already the name of bodies[" + std::to_string(j) + "]",
+              "a name unique among the bodies");
+    body.material = static_cast<int>(materialIndex(b, scene));
+    body.shape = readShape(b, shape);
+    if (b.has("velocity"))
+      body.velocity =
+          readVec2(b.ctx(), b.require("velocity"), b.keyPath("velocity"), Dimension::Velocity);
+    const eos::Eos& eos = scene.materials[static_cast<std::size_t>(body.material)].eos;
+    body.density = b.quantity("density", Dimension::Density, eos::referenceDensity(eos));
+    b.check(body.density > 0.0, "density", "must be > 0", "a density > 0");
+    body.specificEnergy = initialEnergy(b, eos, body.density);
+    scene.bodies.push_back(std::move(body));
+    sources.bodies.push_back(t);
+  }
+}
+
+}  // namespace hvi::cases::detail

@@ -1,0 +1,118 @@
+//! @file [sph], [tvd], [riemann] and [output]: solver parameters and what to write.
+#include <fmt/format.h>
+
+#include <climits>
+
+#include "detail/parse.hpp"
+#include "detail/schema.hpp"
+#include "hvi/cases/names.hpp"
+
+namespace hvi::cases::detail {
+namespace {
+
+void parseSph(const TableReader& s, SphParams& p) {
+  s.rejectUnknown(kSphKeys);
+  p.spacing = s.quantity("spacing", Dimension::Length, p.spacing);
+  s.check(p.spacing > 0.0, "spacing", "must be > 0", "a length > 0");
+  p.hFactor = s.number("h_factor", p.hFactor);
+  s.check(p.hFactor > 0.0, "h_factor", "must be > 0 (h = h_factor * spacing)", "h_factor > 0");
+  p.kernel =
+      static_cast<Kernel>(s.choice("kernel", kernelNames(), static_cast<std::size_t>(p.kernel)));
+  p.lattice = static_cast<Lattice>(
+      s.choice("lattice", latticeNames(), static_cast<std::size_t>(p.lattice)));
+  p.alpha = s.number("alpha", p.alpha);
+  s.check(p.alpha >= 0.0, "alpha", "must be >= 0", "alpha >= 0");
+  p.beta = s.number("beta", p.beta);
+  s.check(p.beta >= 0.0, "beta", "must be >= 0", "beta >= 0");
+  p.cfl = s.number("cfl", p.cfl);
+  s.check(p.cfl > 0.0 && p.cfl <= 1.0, "cfl", "must be in (0, 1]", "0 < cfl <= 1");
+  p.massTolerance = s.number("mass_tolerance", p.massTolerance);
+  s.check(p.massTolerance > 0.0 && p.massTolerance < 1.0, "mass_tolerance", "must be in (0, 1)",
+          "0 < mass_tolerance < 1");
+  p.deleteFraction = s.number("delete_fraction", p.deleteFraction);
+  s.check(p.deleteFraction >= 0.0 && p.deleteFraction < 1.0, "delete_fraction", "must be in [0, 1)",
+          "0 <= delete_fraction < 1");
+  const long long it = s.integer("max_mass_iterations", p.maxMassIterations);
+  s.check(it >= 1 && it <= INT_MAX, "max_mass_iterations", "must be >= 1",
+          "an integer in [1, " + std::to_string(INT_MAX) + "]");
+  p.maxMassIterations = static_cast<int>(it);
+}
+
+void parseTvd(const TableReader& s, TvdParams& p) {
+  s.rejectUnknown(kTvdKeys);
+  p.cellSize = s.quantity("cell_size", Dimension::Length, p.cellSize);
+  s.check(p.cellSize > 0.0, "cell_size", "must be > 0", "a length > 0");
+  p.limiter = static_cast<Limiter>(
+      s.choice("limiter", limiterNames(), static_cast<std::size_t>(p.limiter)));
+  p.cfl = s.number("cfl", p.cfl);
+  s.check(p.cfl > 0.0 && p.cfl <= 1.0, "cfl", "must be in (0, 1]", "0 < cfl <= 1");
+  p.markerSpacing = s.number("marker_spacing", p.markerSpacing);
+  s.check(p.markerSpacing > 0.0 && p.markerSpacing <= 10.0, "marker_spacing",
+          "must be in (0, 10] cells", "0 < marker_spacing <= 10 (in cells)");
+  p.vacuumDensity = s.number("vacuum_density", p.vacuumDensity);
+  s.check(p.vacuumDensity > 0.0 && p.vacuumDensity < 1.0, "vacuum_density",
+          "must be in (0, 1) (a fraction of rho0)", "0 < vacuum_density < 1");
+}
+
+// Where two rect bodies meet along x, if they do: the natural Riemann interface.
+std::optional<double> meetingPoint(const Scene& scene) {
+  if (scene.bodies.size() != 2) return std::nullopt;
+  const auto* a = std::get_if<Rect>(&scene.bodies[0].shape);
+  const auto* b = std::get_if<Rect>(&scene.bodies[1].shape);
+  if (!a || !b) return std::nullopt;
+  return a->xmin <= b->xmin ? a->xmax : b->xmax;
+}
+
+void parseRiemann(const TableReader& s, RiemannParams& p, const Scene& scene) {
+  s.rejectUnknown(kRiemannKeys);
+  const long long cells = s.integer("cells", p.cells);
+  s.check(cells >= 2 && cells <= 100000000, "cells", "must be in [2, 1e8]",
+          "an integer in [2, 100000000]");
+  p.cells = static_cast<int>(cells);
+  p.interface =
+      s.quantity("interface", Dimension::Length, meetingPoint(scene).value_or(p.interface));
+}
+
+}  // namespace
+
+void parseSolverParams(const TableReader& root, Scene& scene) {
+  const toml::table empty;
+  auto section = [&](std::string_view key) {
+    auto t = root.subTable(key, false);
+    return t ? *t : TableReader(root.ctx(), empty, std::string(key));
+  };
+  parseSph(section("sph"), scene.sph);
+  parseTvd(section("tvd"), scene.tvd);
+  parseRiemann(section("riemann"), scene.riemann, scene);
+}
+
+void parseOutput(const TableReader& root, Scene& scene) {
+  const auto o = root.subTable("output", false);
+  if (!o) return;
+  o->rejectUnknown(kOutputKeys);
+  Output& out = scene.output;
+  if (const toml::node* n = o->find("times")) {
+    const std::string path = o->keyPath("times");
+    const auto& arr = readArray(root.ctx(), *n, path, 0, "[\"1 us\", \"2 us\"]");
+    for (std::size_t i = 0; i < arr.size(); ++i) {
+      const std::string p = path + "[" + std::to_string(i) + "]";
+      const double t = readQuantity(root.ctx(), *arr.get(i), p, Dimension::Time);
+      const std::string window =
+          fmt::format("({}, {}] us", shortNumber(scene.tStart), shortNumber(scene.tEnd));
+      if (!(t > scene.tStart && t <= scene.tEnd))
+        fail(root.ctx(), arr.get(i), p, "outside the simulated time " + window,
+             "times in (time.start, time.end]");
+      if (!out.times.empty() && !(t > out.times.back()))
+        fail(root.ctx(), arr.get(i), p, "output times must increase strictly",
+             "ascending times, each once");
+      out.times.push_back(t);
+    }
+  }
+  out.hdf5 = o->boolean("hdf5", out.hdf5);
+  out.vtk = o->boolean("vtk", out.vtk);
+  out.checkpointEvery = o->quantity("checkpoint_every", Dimension::WallTime, out.checkpointEvery);
+  o->check(out.checkpointEvery >= 0.0, "checkpoint_every", "must be >= 0 (0: at snapshots only)",
+           "a wall-clock time >= 0 in s, min or h");
+}
+
+}  // namespace hvi::cases::detail

@@ -1,0 +1,126 @@
+//! @file The resolved scene as TOML: every default filled in, internal units as bare numbers.
+#include <fmt/format.h>
+
+#include <sstream>
+
+#include "detail/reader.hpp"
+#include "hvi/cases/load.hpp"
+#include "hvi/cases/names.hpp"
+
+namespace hvi::cases {
+namespace {
+
+using detail::tomlString;
+
+// Always a TOML float ("7.0", "1e-09"), and it reads back to the same double.
+std::string num(double v) {
+  std::string s = detail::shortNumber(v);
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+  return s;
+}
+
+std::string pair(double a, double b) { return fmt::format("[{}, {}]", num(a), num(b)); }
+std::string vec(Vec2 v) { return pair(v.x, v.z); }
+
+struct EosWriter {
+  std::ostringstream& o;
+  void operator()(const eos::Tillotson& t) const {
+    o << "eos = \"tillotson\"\nrho0 = " << num(t.rho0) << "\na = " << num(t.a)
+      << "\nb = " << num(t.b) << "\nA = " << num(t.A) << "\nB = " << num(t.B)
+      << "\ne0 = " << num(t.e0) << "\nalpha = " << num(t.alpha) << "\nbeta = " << num(t.beta)
+      << "\ne1 = " << num(t.e1) << "\ne2 = " << num(t.e2)
+      << "\nsound_speed_floor = " << num(t.soundSpeedFloorFraction) << "\n";
+  }
+  void operator()(const eos::IdealGas& g) const {
+    o << "eos = \"ideal_gas\"\nrho0 = " << num(g.rho0) << "\ngamma = " << num(g.gamma) << "\n";
+  }
+  void operator()(const eos::MieGruneisen& g) const {
+    o << "eos = \"mie_gruneisen\"\nrho0 = " << num(g.rho0) << "\nc0 = " << num(g.c0)
+      << "\ns = " << num(g.s) << "\ngamma0 = " << num(g.gamma0)
+      << "\nsound_speed_floor = " << num(g.soundSpeedFloorFraction) << "\n";
+  }
+};
+
+struct ShapeWriter {
+  std::ostringstream& o;
+  void operator()(const Disk& d) const {
+    o << "shape = \"disk\"\ncentre = " << vec(d.centre) << "\nradius = " << num(d.radius) << "\n";
+  }
+  void operator()(const Rect& r) const {
+    o << "shape = \"rect\"\nx = " << pair(r.xmin, r.xmax) << "\nz = " << pair(r.zmin, r.zmax)
+      << "\n";
+  }
+  void operator()(const Polygon& p) const {
+    o << "shape = \"polygon\"\nvertices = [";
+    for (std::size_t i = 0; i < p.vertices.size(); ++i) o << (i ? ", " : "") << vec(p.vertices[i]);
+    o << "]\n";
+  }
+};
+
+}  // namespace
+
+std::string toToml(const Scene& s) {
+  std::ostringstream o;
+  o << "# Resolved scene: every default filled in, every value in internal units.\n"
+       "# cm-g-us: length cm, time us, velocity cm/us, density g/cm^3, pressure Mbar,\n"
+       "# specific energy cm^2/us^2; wall-clock times in s.\n";
+  if (!s.path.empty()) {
+    std::string path = s.path;  // a comment ends at a line break: keep it on one line
+    for (char& c : path)
+      if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+    o << "# Read from " << path << "\n";
+  }
+  o << "units = \"cm-g-us\"\n"
+    << "title = " << tomlString(s.title) << "\n"
+    << "geometry = \"" << toString(s.geometry) << "\"\n"
+    << "solver = \"" << toString(s.solver) << "\"\n"
+    << "effects = [";
+  bool first = true;
+  for (Effect e : s.effects) {
+    o << (first ? "" : ", ") << "\"" << toString(e) << "\"";
+    first = false;
+  }
+  o << "]\n\n[time]\nstart = " << num(s.tStart) << "\nend = " << num(s.tEnd) << "\n";
+
+  const Domain& d = s.domain;
+  o << "\n[domain]\nx = " << pair(d.xmin, d.xmax) << "\nz = " << pair(d.zmin, d.zmax)
+    << "\nboundaries = { xmin = \"" << toString(d.boundary[0]) << "\", xmax = \""
+    << toString(d.boundary[1]) << "\", zmin = \"" << toString(d.boundary[2]) << "\", zmax = \""
+    << toString(d.boundary[3]) << "\" }\n";
+
+  for (const Material& m : s.materials) {
+    o << "\n[materials." << detail::pathKey(m.name) << "]\n";
+    std::visit(EosWriter{o}, m.eos);
+  }
+  for (const Body& b : s.bodies) {
+    o << "\n[[bodies]]\nname = " << tomlString(b.name) << "\nmaterial = ";
+    const bool known = b.material >= 0 && static_cast<std::size_t>(b.material) < s.materials.size();
+    o << tomlString(known ? s.materials[static_cast<std::size_t>(b.material)].name : "") << "\n";
+    std::visit(ShapeWriter{o}, b.shape);
+    o << "velocity = " << vec(b.velocity) << "\ndensity = " << num(b.density)
+      << "\nspecific_energy = " << num(b.specificEnergy) << "\n";
+  }
+
+  const SphParams& p = s.sph;
+  o << "\n[sph]\nspacing = " << num(p.spacing) << "\nh_factor = " << num(p.hFactor)
+    << "\nkernel = \"" << toString(p.kernel) << "\"\nlattice = \"" << toString(p.lattice)
+    << "\"\nalpha = " << num(p.alpha) << "\nbeta = " << num(p.beta) << "\ncfl = " << num(p.cfl)
+    << "\nmass_tolerance = " << num(p.massTolerance)
+    << "\ndelete_fraction = " << num(p.deleteFraction)
+    << "\nmax_mass_iterations = " << p.maxMassIterations << "\n";
+  const TvdParams& t = s.tvd;
+  o << "\n[tvd]\ncell_size = " << num(t.cellSize) << "\nlimiter = \"" << toString(t.limiter)
+    << "\"\ncfl = " << num(t.cfl) << "\nmarker_spacing = " << num(t.markerSpacing)
+    << "\nvacuum_density = " << num(t.vacuumDensity) << "\n";
+  o << "\n[riemann]\ncells = " << s.riemann.cells << "\ninterface = " << num(s.riemann.interface)
+    << "\n";
+  o << "\n[output]\ntimes = [";
+  for (std::size_t i = 0; i < s.output.times.size(); ++i)
+    o << (i ? ", " : "") << num(s.output.times[i]);
+  o << "]\nhdf5 = " << (s.output.hdf5 ? "true" : "false")
+    << "\nvtk = " << (s.output.vtk ? "true" : "false")
+    << "\ncheckpoint_every = " << num(s.output.checkpointEvery) << "\n";
+  return o.str();
+}
+
+}  // namespace hvi::cases

@@ -1,0 +1,38 @@
+//! @file `hvi compare A B`: the whole command (inputs, table, compare.json, compare_diff.vti).
+#pragma once
+#include <filesystem>
+#include <optional>
+
+#include <CLI/CLI.hpp>
+
+#include "hvi/common/snapshot.hpp"
+
+namespace hvi::compare {
+
+struct CompareCliOptions {
+  std::optional<double> time;        //!< us: pick the snapshot at this time in a run folder
+  double timeTolerance = 1e-3;       //!< us: how close a snapshot's time must be to `time`
+  std::optional<double> spacing;     //!< cm: common grid spacing (default: coarser native one)
+  std::filesystem::path out = ".";   //!< folder for compare.json and compare_diff.vti
+  std::optional<double> maxDensityL1;  //!< bound on the material-region relative L1
+  std::optional<double> minIou;        //!< bound on the smallest object (or material) IoU
+  bool quiet = false;                  //!< no table on stdout
+};
+
+//! Adds the options above to the `compare` subcommand.
+void addCliOptions(CLI::App& cmd, CompareCliOptions& opt);
+
+//! A snapshot file, or the snapshot of a run folder (files snap_*.h5) at `time` (within
+//! `tolerance`) or the last one. `sceneToml` receives the resolved scene stored in the file.
+//! Throws InputError naming the path and, for a time with no snapshot, the times available.
+Snapshot loadSnapshot(const std::filesystem::path& path, std::optional<double> time,
+                      double tolerance, std::string* sceneToml = nullptr,
+                      std::filesystem::path* chosen = nullptr);
+
+//! Runs `hvi compare A B`: prints the table, writes <out>/compare.json and
+//! <out>/compare_diff.vti. Returns 0 (compared, thresholds met), 1 (a threshold failed) or 2
+//! (bad input: missing file, no snapshot at the time, incompatible snapshots).
+int runCompareCommand(const std::filesystem::path& a, const std::filesystem::path& b,
+                      const CompareCliOptions& opt);
+
+}  // namespace hvi::compare

@@ -1,0 +1,127 @@
+//! @file `hvi compare A B` end to end: inputs, outputs and exit status.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "hvi/compare/cli.hpp"
+#include "hvi/io/output.hpp"
+#include "synthetic.hpp"
+
+namespace hvi::compare {
+namespace {
+namespace fs = std::filesystem;
+
+test::Scene2 disk(double cx) {
+  test::Scene2 s{[=](Vec2 p) { return std::hypot(p.x - cx, p.z) <= 0.3 ? 0 : -1; }};
+  s.object = [](Vec2) { return 0; };
+  return s;
+}
+
+class CompareCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root_ = fs::path(HVI_BINARY_DIR) / "test_tmp" /
+            ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::remove_all(root_);
+    fs::create_directories(root_ / "a");
+    fs::create_directories(root_ / "b");
+    const GridSpec g{80, 80, -0.4, -0.4, 0.01, 0.01};
+    write(root_ / "a" / "snap_0.h5", disk(0.0), g, 0.0, 0);
+    write(root_ / "a" / "snap_20.h5", disk(0.0), g, 1.0, 20);
+    write(root_ / "b" / "snap_0.h5", disk(0.0), g, 0.0, 0);
+    write(root_ / "b" / "snap_31.h5", disk(0.03), g, 1.0, 31);  // shifted by 3 cells
+  }
+  static void write(const fs::path& f, const test::Scene2& s, const GridSpec& g, double t,
+                    long step) {
+    Snapshot snap = test::gridOf(s, g);
+    snap.time = t;
+    snap.step = step;
+    io::writeHdf5(f, snap, "");
+  }
+  CompareCliOptions opts(const char* out) const {
+    CompareCliOptions o;
+    o.out = root_ / out;
+    o.quiet = true;
+    return o;
+  }
+  fs::path root_;
+};
+
+TEST_F(CompareCommand, LastSnapshotsOfTwoRunFolders) {
+  CompareCliOptions o = opts("out");
+  ASSERT_EQ(runCompareCommand(root_ / "a", root_ / "b", o), 0);
+  ASSERT_TRUE(fs::exists(o.out / "compare_diff.vti"));
+  std::ifstream in(o.out / "compare.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_NE(j["a"]["file"].get<std::string>().find("snap_20.h5"), std::string::npos);
+  EXPECT_NE(j["b"]["file"].get<std::string>().find("snap_31.h5"), std::string::npos);
+  EXPECT_LT(j["objects"]["min_iou"].get<double>(), 0.95);
+  EXPECT_TRUE(j["thresholds"]["pass"].get<bool>());
+}
+
+TEST_F(CompareCommand, ThresholdsGiveExitOne) {
+  CompareCliOptions o = opts("out");
+  o.minIou = 0.99;
+  EXPECT_EQ(runCompareCommand(root_ / "a", root_ / "b", o), 1);
+  o.minIou.reset();
+  o.maxDensityL1 = 0.01;
+  EXPECT_EQ(runCompareCommand(root_ / "a", root_ / "b" / "snap_31.h5", o), 1);
+  std::ifstream in(o.out / "compare.json");
+  EXPECT_FALSE(nlohmann::json::parse(in)["thresholds"]["pass"].get<bool>());
+}
+
+TEST_F(CompareCommand, SnapshotAtAGivenTime) {
+  CompareCliOptions o = opts("out");
+  o.time = 0.0;
+  o.minIou = 1.0;
+  o.maxDensityL1 = 0.0;
+  EXPECT_EQ(runCompareCommand(root_ / "a", root_ / "b", o), 0);
+  o.time = 0.5;
+  EXPECT_EQ(runCompareCommand(root_ / "a", root_ / "b", o), 2);
+}
+
+TEST_F(CompareCommand, BadInputGivesExitTwo) {
+  CompareCliOptions o = opts("out");
+  EXPECT_EQ(runCompareCommand(root_ / "missing", root_ / "b", o), 2);
+  fs::create_directories(root_ / "empty");
+  EXPECT_EQ(runCompareCommand(root_ / "empty", root_ / "b", o), 2);
+  std::ofstream(root_ / "junk.h5") << "not hdf5";
+  EXPECT_EQ(runCompareCommand(root_ / "junk.h5", root_ / "b", o), 2);
+  o.spacing = -1.0;
+  EXPECT_EQ(runCompareCommand(root_ / "a", root_ / "b", o), 2);
+}
+
+TEST_F(CompareCommand, SphAgainstTvdWithFeaturesFromTheStoredScene) {
+  // Both snapshots carry the resolved variant-1 scene: bodies "striker" and "shield", shield band
+  // z in [8, 8.155]. A plate with a hole of radius 0.35 cm: particles (0.01 cm) against a grid
+  // (0.015 cm); the common grid is the coarser, and the hole radius is found within one cell.
+  std::ifstream in(fs::path(HVI_SOURCE_DIR) / "cases" / "scenes" / "variant1_tvd_coarse.toml");
+  const std::string toml{std::istreambuf_iterator<char>(in), {}};
+  ASSERT_FALSE(toml.empty());
+  test::Scene2 plate{[](Vec2 p) {
+    return p.z >= 8.0 && p.z <= 8.155 && p.x >= 0.35 && p.x <= 2.0 ? 0 : -1;
+  }};
+  plate.object = [](Vec2) { return 1; };
+  Snapshot sph = test::lattice(plate, 0.0, 2.0, 7.9, 8.3, 0.01, 1.0, Geometry::Axisymmetric);
+  Snapshot tvd = test::gridOf(plate, GridSpec{140, 40, 0.0, 7.7, 0.015, 0.015},
+                              Geometry::Axisymmetric);
+  io::writeHdf5(root_ / "sph.h5", sph, toml);
+  io::writeHdf5(root_ / "tvd.h5", tvd, toml);
+  CompareCliOptions o = opts("out");
+  ASSERT_EQ(runCompareCommand(root_ / "sph.h5", root_ / "tvd.h5", o), 0);
+  std::ifstream js(o.out / "compare.json");
+  const nlohmann::json j = nlohmann::json::parse(js);
+  EXPECT_EQ(j["a"]["features_config"]["shield"], "shield");
+  EXPECT_EQ(j["a"]["features_config"]["shield_z_min"].get<double>(), 8.0);
+  for (const char* side : {"a", "b"}) {
+    EXPECT_NEAR(j[side]["features"]["hole_radius"].get<double>(), 0.35, 0.015) << side;
+    EXPECT_TRUE(j[side]["features"]["cloud_leading_edge_z"].is_null()) << side;
+  }
+  EXPECT_NEAR(j["grid"]["dx"].get<double>(), 0.015, 1e-12);
+}
+
+}  // namespace
+}  // namespace hvi::compare

@@ -1,0 +1,155 @@
+//! @file Debris-cloud features recovered from synthetic shapes of known size.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "hvi/cases/scene.hpp"
+#include "hvi/common/error.hpp"
+#include "hvi/compare/features.hpp"
+#include "synthetic.hpp"
+
+namespace hvi::compare {
+namespace {
+
+using test::Scene2;
+
+// The synthetic debris: a shield plate z in [8, 8.155] with a hole of radius 0.35; below it an
+// elliptical shell of shield material (outer semi-axes 0.6 in x, 0.4 in z, centre z = 7.5, so
+// its leading edge is at z = 7.1 and its radius 0.6); inside, the striker remnant, a disk of
+// radius 0.15 at z = 7.6 and density 3.5 (the peak).
+constexpr double kHole = 0.35, kEdge = 7.1, kBubble = 0.6, kStrikerZ = 7.6, kStrikerR = 0.15;
+
+Scene2 debris() {
+  auto inEllipse = [](Vec2 p, double a, double b) {
+    return std::pow(p.x / a, 2) + std::pow((p.z - 7.5) / b, 2) <= 1.0;
+  };
+  auto part = [=](Vec2 p) {
+    if (std::hypot(p.x, p.z - kStrikerZ) <= kStrikerR) return 0;
+    if (p.z >= 8.0 && p.z <= 8.155 && std::abs(p.x) >= kHole && std::abs(p.x) <= 2.0) return 1;
+    if (inEllipse(p, kBubble, 0.4) && !inEllipse(p, 0.5, 0.3)) return 1;
+    return -1;
+  };
+  Scene2 s{[=](Vec2 p) { return part(p) >= 0 ? 0 : -1; }};
+  s.object = part;
+  s.density = [=](Vec2 p) { return part(p) == 0 ? 3.5 : 2.79; };
+  return s;
+}
+
+FeatureConfig config() {
+  FeatureConfig c;
+  c.shieldZMin = 8.0;
+  c.shieldZMax = 8.155;
+  return c;
+}
+
+void expectDebris(const Features& f, double tol) {
+  ASSERT_TRUE(f.holeRadius && f.cloudLeadingEdgeZ && f.bubbleRadius && f.strikerCentroidZ);
+  EXPECT_NEAR(*f.holeRadius, kHole, tol);
+  EXPECT_NEAR(*f.cloudLeadingEdgeZ, kEdge, tol);
+  EXPECT_NEAR(*f.bubbleRadius, kBubble, tol);
+  EXPECT_NEAR(*f.strikerZMin, kStrikerZ - kStrikerR, tol);
+  EXPECT_NEAR(*f.strikerZMax, kStrikerZ + kStrikerR, tol);
+  // A disk (sphere in r-z) centred at z = 7.6 has its centroid there; resampling errors are
+  // symmetric up to one cell's offset of the grid against the disk.
+  EXPECT_NEAR(*f.strikerCentroidZ, kStrikerZ, tol);
+  EXPECT_NEAR(f.peakDensity, 3.5, 1e-9);
+  EXPECT_NEAR(f.peakDensityZ, kStrikerZ, kStrikerR + tol);
+}
+
+TEST(Features, ParticleDebrisPlanarWithinOneCell) {
+  const Snapshot s = test::lattice(debris(), -2.0, 2.0, 6.9, 8.3, 0.01);
+  const Features f = measureFeatures(s, config());
+  EXPECT_NEAR(f.cellSize, 0.01, 1e-12);
+  expectDebris(f, f.cellSize);
+}
+
+TEST(Features, ParticleDebrisAxisymmetricWithinOneCell) {
+  const Snapshot s =
+      test::lattice(debris(), 0.0, 2.0, 6.9, 8.3, 0.01, 1.0, Geometry::Axisymmetric, true);
+  const Features f = measureFeatures(s, config());
+  expectDebris(f, f.cellSize);
+}
+
+TEST(Features, GridDebrisWithinOneCellAtTvdResolution) {
+  const GridSpec g{267, 100, 0.0, 6.8, 0.015, 0.015};
+  const Snapshot s = test::gridOf(debris(), g, Geometry::Axisymmetric);
+  const Features f = measureFeatures(s, config());
+  EXPECT_NEAR(f.cellSize, 0.015, 1e-12);
+  expectDebris(f, f.cellSize);
+}
+
+TEST(Features, ReversedImpactDirectionMirrorsTheFeatures) {
+  Scene2 s = debris();
+  Scene2 flipped = s;
+  flipped.material = [s](Vec2 p) { return s.material({p.x, -p.z}); };
+  flipped.object = [s](Vec2 p) { return s.object({p.x, -p.z}); };
+  flipped.density = [s](Vec2 p) { return s.density({p.x, -p.z}); };
+  const GridSpec g{267, 100, 0.0, -8.3, 0.015, 0.015};
+  FeatureConfig c = config();
+  c.shieldZMin = -8.155;
+  c.shieldZMax = -8.0;
+  c.direction = +1;
+  const Features f = measureFeatures(test::gridOf(flipped, g, Geometry::Axisymmetric), c);
+  ASSERT_TRUE(f.cloudLeadingEdgeZ && f.holeRadius);
+  EXPECT_NEAR(*f.cloudLeadingEdgeZ, -kEdge, f.cellSize);
+  EXPECT_NEAR(*f.holeRadius, kHole, f.cellSize);
+  EXPECT_NEAR(*f.bubbleRadius, kBubble, f.cellSize);
+}
+
+TEST(Features, IntactShieldHasNoHoleAndNoCloud) {
+  // t = 0: a sphere resting on an unbroken plate. The hole radius is 0 (shield at the axis) and
+  // nothing lies beyond the rear face.
+  Scene2 s{[](Vec2 p) {
+    return (p.z >= 8.0 && p.z <= 8.155 && p.x <= 2.0) || std::hypot(p.x, p.z - 8.63) <= 0.475
+               ? 0 : -1;
+  }};
+  s.object = [](Vec2 p) { return p.z > 8.155 ? 0 : 1; };
+  const Snapshot snap =
+      test::lattice(s, 0.0, 2.0, 7.9, 9.2, 0.01, 1.0, Geometry::Axisymmetric, true);
+  const Features f = measureFeatures(snap, config());
+  ASSERT_TRUE(f.holeRadius);
+  EXPECT_EQ(*f.holeRadius, 0.0);
+  EXPECT_FALSE(f.cloudLeadingEdgeZ);
+  EXPECT_FALSE(f.bubbleRadius);
+  EXPECT_NEAR(*f.strikerZMin, 8.155, f.cellSize);
+  // The sphere's top is not on a lattice face: the particles represent it only to dx / 2, and the
+  // grid adds up to one cell.
+  EXPECT_NEAR(*f.strikerZMax, 8.63 + 0.475, 1.5 * f.cellSize);
+  const nlohmann::json j = toJson(f);
+  EXPECT_TRUE(j["cloud_leading_edge_z"].is_null());
+  EXPECT_EQ(j["hole_radius"].get<double>(), 0.0);
+}
+
+TEST(Features, ConfigFromSceneFollowsNamesThenOrder) {
+  cases::Scene scene;
+  scene.geometry = Geometry::Axisymmetric;
+  cases::Body plate{"plate", 0, cases::Rect{0.0, 4.0, 8.0, 8.155}, {}, 2.79, 0.0};
+  cases::Body ball{"ball", 0, cases::Disk{{0.0, 8.63}, 0.475}, {0.0, -0.67}, 2.79, 0.0};
+  scene.bodies = {ball, plate};
+  FeatureConfig c = featureConfigFromScene(scene);
+  EXPECT_EQ(c.striker, "ball");
+  EXPECT_EQ(c.shield, "plate");
+  EXPECT_EQ(c.shieldZMin, 8.0);
+  EXPECT_EQ(c.shieldZMax, 8.155);
+  EXPECT_EQ(c.direction, -1);
+  scene.bodies[0].name = "shield";  // names win over order
+  scene.bodies[1].name = "striker";
+  scene.bodies[1].velocity = {0.0, -0.67};
+  scene.bodies[0].shape = cases::Rect{0.0, 4.0, 8.0, 8.155};
+  c = featureConfigFromScene(scene);
+  EXPECT_EQ(c.strikerIndex, 1);
+  EXPECT_EQ(c.shieldIndex, 0);
+  scene.bodies.resize(1);
+  EXPECT_THROW(featureConfigFromScene(scene), InputError);
+}
+
+TEST(Features, UnknownPartIsAnInputError) {
+  const Snapshot s = test::gridOf(debris(), GridSpec{10, 10, 0.0, 7.0, 0.1, 0.1});
+  FeatureConfig c = config();
+  c.shield = "wall";
+  c.shieldIndex = -1;
+  EXPECT_THROW(measureFeatures(s, c), InputError);
+}
+
+}  // namespace
+}  // namespace hvi::compare

@@ -1,0 +1,190 @@
+//! @file Marker advection and redistribution in flows with known behaviour.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "helpers.hpp"
+
+namespace hvi::tvd {
+namespace {
+using test::Field;
+using test::makeGrid;
+using test::spacing;
+constexpr double pi = std::numbers::pi;
+
+// Uniform flow is an exact translation: the lerp-form interpolation returns the constant bit
+// for bit, so every marker gets the same displacement dt*v, and segment lengths (hence the
+// redistribution) do not change. What remains is one rounding per coordinate per step
+// (|error| <= ulp(1)/2 for coordinates below 1 cm), so after N steps every marker is within
+// N ulp(1)/2 of where it started and the relative area change is at most
+// perimeter * N ulp / area = 2 N ulp / R.
+TEST(MarkerAdvect, UniformFlowThereAndBackIsExactTranslation) {
+  const GridSpec g = makeGrid(100, 100, 0.0, 0.0, 0.01);
+  const double R = 0.1;
+  auto set = MarkerSet::fromShapes({cases::Disk{{0.25, 0.3}, R}}, g, 0.5, Geometry::Planar);
+  const auto start = set.lines()[0].points;
+  const double a0 = set.area(0);
+  const std::size_t n0 = set.size();
+  const Vec2 v{0.7, 0.4};  // cm/us; 0.6 cm = 3 diameters each way
+  const int steps = 200;
+  const double dt = 0.6 / norm(v) / steps;
+  Field there(g, [&](Vec2) { return v; }), back(g, [&](Vec2) { return -v; });
+  double worstArea = 0.0;
+  for (int s = 0; s < 2 * steps; ++s) {
+    const Field& f = s < steps ? there : back;
+    set.advect(g, f.vx.data(), f.vz.data(), dt);
+    set.redistribute(g);
+    worstArea = std::max(worstArea, std::abs(set.area(0) / a0 - 1.0));
+  }
+  const double ulp = std::nextafter(1.0, 2.0) - 1.0;
+  EXPECT_LT(worstArea, 2.0 * 2 * steps * ulp / R);
+  ASSERT_EQ(set.size(), n0);
+  double drift = 0.0;
+  for (std::size_t j = 0; j < n0; ++j)
+    drift = std::max(drift, norm(set.lines()[0].points[j] - start[j]));
+  EXPECT_LE(drift, std::sqrt(2.0) * 2 * steps * 0.5 * ulp);
+  const auto sp = spacing(set);
+  EXPECT_GE(sp.min, set.minSpacingCells() * g.dx);
+  EXPECT_LE(sp.max, set.maxSpacingCells() * g.dx);
+  std::printf("[uniform] max |dA/A| = %.2e, max drift = %.2e cm, markers %zu\n", worstArea, drift,
+              n0);
+}
+
+// Solid-body rotation v = omega x (p - c) is linear, so bilinear interpolation is exact (no
+// interpolation error) and one midpoint step is the linear map M = I + th J + th^2/2 J^2,
+// th = omega dt, with det M = 1 + th^4 / 4 exactly. The polygon area is therefore multiplied
+// by (1 + th^4/4)^N: the measured change must match that to round-off.
+TEST(MarkerAdvect, SolidBodyRotationOneTurn) {
+  const GridSpec g = makeGrid(64, 64, 0.0, 0.0, 1.0 / 64);
+  const Vec2 c{0.5, 0.5};
+  const double omega = 2.0 * pi;  // one turn per microsecond
+  const int steps = 400;
+  const double dt = 1.0 / steps, th = omega * dt;
+  Field f(g, [&](Vec2 p) { return omega * Vec2{-(p.z - c.z), p.x - c.x}; });
+  auto set = MarkerSet::fromShapes({cases::Disk{{0.5, 0.75}, 0.15}}, g, 0.5, Geometry::Planar);
+  const double a0 = set.area(0);
+  const std::size_t n0 = set.size();
+  for (int s = 0; s < steps; ++s) {
+    set.advect(g, f.vx.data(), f.vz.data(), dt);
+    set.redistribute(g);
+  }
+  const double predicted = std::pow(1.0 + std::pow(th, 4) / 4.0, steps) - 1.0;
+  const double measured = set.area(0) / a0 - 1.0;
+  EXPECT_NEAR(measured, predicted, 1e-12);
+  EXPECT_EQ(set.size(), n0);
+  const auto sp = spacing(set);
+  EXPECT_GE(sp.min, set.minSpacingCells() * g.dx);
+  EXPECT_LE(sp.max, set.maxSpacingCells() * g.dx);
+  std::printf("[rotation] dA/A = %.3e (predicted %.3e), markers %zu\n", measured, predicted,
+              set.size());
+}
+
+// Simple shear vx = S (z - zc): linear and divergence free, and the midpoint step is exact
+// (vz = 0), so advection keeps the area to round-off; insertions lie on the segments and do not
+// change it either. Only removals do: dropping marker q between kept a and b changes the area by
+// the triangle |(q - a) x (b - a)| / 2, which is below min * (max + min) * kappa * min / 4 for a
+// line of curvature kappa. The disk (R = 0.1) is stretched by S t = 20 into a filament 4 cm long
+// and 1 cell thick; its tips have radius ~ R / (S t)^3, and the compressive phase that triggers
+// removals happens early (S t < 2) when kappa ~ 1/R. With ~400 removals of min = 0.0025 cm:
+// |dA| <= 400 * 0.0025 * 0.0125 * 0.0025 / 4 / R = 8e-7 cm^2, i.e. 2.5e-5 of the area.
+TEST(MarkerAdvect, ShearStretchesDiskIntoFilament) {
+  const double d = 0.01, R = 0.1;
+  const GridSpec g = makeGrid(500, 30, -2.5, -0.15, d);
+  const double S = 10.0;  // 1/us
+  Field f(g, [&](Vec2 p) { return Vec2{S * p.z, 0.0}; });
+  auto set = MarkerSet::fromShapes({cases::Disk{{0.0, 0.0}, R}}, g, 0.5, Geometry::Planar);
+  const double a0 = set.area(0);
+  const std::size_t n0 = set.size();
+  const double dt = 0.4 * d / (S * R);                       // 0.4 cell per step at the disk's edge
+  const int steps = static_cast<int>(std::round(2.0 / dt));  // S t = 20
+  double worst = 0.0;
+  for (int s = 0; s < steps; ++s) {
+    set.advect(g, f.vx.data(), f.vz.data(), dt);
+    set.redistribute(g);
+    worst = std::max(worst, std::abs(set.area(0) / a0 - 1.0));
+    const auto sp = spacing(set);
+    ASSERT_GE(sp.min, set.minSpacingCells() * d * (1 - 1e-12)) << s;
+    ASSERT_LE(sp.max, set.maxSpacingCells() * d * (1 + 1e-12)) << s;
+  }
+  double xmin = 1e9, xmax = -1e9, perimeter = 0.0;
+  const auto& p = set.lines()[0].points;
+  for (std::size_t j = 0; j < p.size(); ++j) {
+    xmin = std::min(xmin, p[j].x);
+    xmax = std::max(xmax, p[j].x);
+    perimeter += norm(p[(j + 1) % p.size()] - p[j]);
+  }
+  // Length of the sheared disk: an ellipse whose major semi-axis is R (St/2 + sqrt(1+(St/2)^2)).
+  const double gamma = S * steps * dt;
+  const double semi = R * (0.5 * gamma + std::sqrt(1.0 + 0.25 * gamma * gamma));
+  EXPECT_NEAR(0.5 * (xmax - xmin), semi * gamma / std::sqrt(1.0 + gamma * gamma), 0.02 * semi);
+  EXPECT_LT(worst, 2.5e-5);
+  // Markers grow with the perimeter, not faster: count <= perimeter / min spacing.
+  EXPECT_LE(static_cast<double>(set.size()), perimeter / (set.minSpacingCells() * d));
+  std::printf(
+      "[shear] St = %.1f: max |dA/A| = %.2e, markers %zu -> %zu (x%.1f), perimeter "
+      "%.2f -> %.2f cm (x%.1f), mean spacing %.3f cells\n",
+      gamma, worst, n0, set.size(), double(set.size()) / n0, 2 * pi * R, perimeter,
+      perimeter / (2 * pi * R), perimeter / set.size() / d);
+}
+
+// Rider-Kothe single-vortex deformation (stream function sin^2(pi x) sin^2(pi z) / pi): a
+// nonlinear incompressible shear that winds a disk into a thin spiral filament; the flow is
+// reversed at T/2 so the disk should come back. The cell-centred field interpolated
+// bilinearly is divergence-free only to O(dx^2), so the area error and the shape error must
+// fall about 4x per grid halving (second order); the time error (midpoint, O(dt^2)) falls too
+// as dt scales with dx, and so does the chord error of the markers (spacing ~ dx). T = 4: the
+// disk is wound into a spiral filament about 1.5 turns long before it is unwound.
+struct VortexResult {
+  double areaErr, shapeErr;
+  std::size_t maxMarkers, start;
+};
+VortexResult singleVortex(int n, double T) {
+  const GridSpec g = makeGrid(n, n, 0.0, 0.0, 1.0 / n);
+  auto vel = [](Vec2 p) {
+    const double sx = std::sin(pi * p.x), sz = std::sin(pi * p.z);
+    return Vec2{-2.0 * sx * sx * sz * std::cos(pi * p.z), 2.0 * sz * sz * sx * std::cos(pi * p.x)};
+  };
+  Field fwd(g, vel), rev(g, [&](Vec2 p) { return -vel(p); });
+  const Vec2 c{0.5, 0.75};
+  const double R = 0.15;
+  auto set = MarkerSet::fromShapes({cases::Disk{c, R}}, g, 0.5, Geometry::Planar);
+  const double a0 = set.area(0);
+  VortexResult r{0.0, 0.0, set.size(), set.size()};
+  const int steps = static_cast<int>(2 * T * n);  // max |v| = 1 cm/us: CFL 0.5
+  const double dt = T / steps;
+  for (int s = 0; s < steps; ++s) {
+    const Field& f = s < steps / 2 ? fwd : rev;
+    set.advect(g, f.vx.data(), f.vz.data(), dt);
+    set.redistribute(g);
+    r.maxMarkers = std::max(r.maxMarkers, set.size());
+  }
+  r.areaErr = std::abs(set.area(0) / a0 - 1.0);
+  const auto sp = spacing(set);
+  EXPECT_GE(sp.min, set.minSpacingCells() * g.dx);
+  EXPECT_LE(sp.max, set.maxSpacingCells() * g.dx);
+  for (Vec2 p : set.lines()[0].points) r.shapeErr = std::max(r.shapeErr, std::abs(norm(p - c) - R));
+  return r;
+}
+
+TEST(MarkerAdvect, SingleVortexReversalConvergesSecondOrder) {
+  VortexResult r[3];
+  for (int level = 0; level < 3; ++level) {
+    r[level] = singleVortex(32 << level, 4.0);
+    std::printf("[vortex] n=%d: |dA/A| = %.2e, max |r-R| = %.2e cm, markers %zu -> max %zu\n",
+                32 << level, r[level].areaErr, r[level].shapeErr, r[level].start,
+                r[level].maxMarkers);
+  }
+  // Second order means a factor 4 per halving; 3 leaves room for the pre-asymptotic range
+  // (a first-order error would give 2).
+  for (int level = 1; level < 3; ++level) {
+    EXPECT_LT(r[level].shapeErr, r[level - 1].shapeErr / 3.0);
+    EXPECT_LT(r[level].areaErr, r[level - 1].areaErr / 3.0);
+  }
+  // Markers track the perimeter: the spiral is ~6x the circle's perimeter at its longest.
+  EXPECT_LT(r[2].maxMarkers, 8 * r[2].start);
+}
+
+}  // namespace
+}  // namespace hvi::tvd
