@@ -54,12 +54,12 @@ constexpr double kDtCollapseFraction = 1e-6;
 
 class Run {
  public:
-  Run(const RunOptions& opts, cases::Scene scene)
-      : opts_(opts), scene_(std::move(scene)), sceneToml_(cases::toToml(scene_)),
+  Run(const RunOptions& opts, cases::Scene scene, SolverFactory factory)
+      : factory_(std::move(factory)), opts_(opts), scene_(std::move(scene)), sceneToml_(cases::toToml(scene_)),
         record_(opts.out, scene_, sceneToml_), pvd_(opts.out / "hvi.pvd") {}
 
   int execute() {
-    solver_ = createSolver(scene_);
+    solver_ = factory_(scene_);
     const fs::path ckpt = opts_.out / "checkpoint.bin";
     if (opts_.restart) {
       if (!fs::exists(ckpt))
@@ -163,6 +163,7 @@ class Run {
                             [&](std::ostream& out) { solver_->writeCheckpoint(out); });
   }
 
+  SolverFactory factory_;
   RunOptions opts_;
   cases::Scene scene_;
   std::string sceneToml_;
@@ -183,7 +184,9 @@ void removeStaleTemporaries(const fs::path& dir) {
 
 }  // namespace
 
-int runScene(const RunOptions& opts) {
+int runScene(const RunOptions& opts) { return runScene(opts, createSolver); }
+
+int runScene(const RunOptions& opts, const SolverFactory& factory) {
   cases::Scene scene;
   try {
     scene = cases::loadScene(opts.scene, opts.overrides);
@@ -196,7 +199,7 @@ int runScene(const RunOptions& opts) {
     removeStaleTemporaries(opts.out);
     writeTextAtomically(opts.out / "scene.toml", cases::toToml(scene));
     installStopHandlers();
-    Run run(opts, std::move(scene));
+    Run run(opts, std::move(scene), factory);
     return run.execute();
   } catch (const InputError& e) {
     fmt::print(stderr, "hvi: {}\n", e.what());

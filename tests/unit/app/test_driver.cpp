@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hvi/apps/driver.hpp"
+#include "hvi/common/error.hpp"
 #include "hvi/common/stop_flag.hpp"
 #include "hvi/io/output.hpp"
 
@@ -48,7 +49,11 @@ app::RunOptions smallImpact(const std::string& solver, const fs::path& out) {
   o.scene = scene("default");
   o.out = out;
   o.quiet = true;
-  o.overrides = {"solver=" + solver, "sph.spacing=0.1 cm", "tvd.cell_size=0.1 cm",
+  // Each solver with the effects it supports (an unsupported effect is an input error).
+  const std::string effects = solver == "sph"
+      ? R"(effects=["artificial_viscosity", "tension_cutoff", "mass_adjustment", "features"])"
+      : R"(effects=["tension_cutoff", "material_interfaces", "features"])";
+  o.overrides = {"solver=" + solver, effects, "sph.spacing=0.1 cm", "tvd.cell_size=0.1 cm",
                  "time.end=0.6 us", "output.times=[\"0.3 us\", \"0.6 us\"]"};
   return o;
 }
@@ -179,4 +184,79 @@ TEST(Driver, SigintWritesCheckpointAndExits130) {
   EXPECT_EQ(WEXITSTATUS(status), 130);
   EXPECT_TRUE(fs::exists(out / "checkpoint.bin"));
   EXPECT_EQ(readJson(out / "summary.json")["status"], "interrupted");
+}
+
+namespace {
+// A real solver that is made to fail at a chosen step, as a NaN or negative density would make
+// it fail: the driver must stop, report, write the failed state and keep what came before.
+class FailingSolver final : public Solver {
+ public:
+  FailingSolver(std::unique_ptr<Solver> inner, long failAt) : inner_(std::move(inner)), failAt_(failAt) {}
+  std::string name() const override { return inner_->name(); }
+  double time() const override { return inner_->time(); }
+  long step() const override { return inner_->step(); }
+  long workItems() const override { return inner_->workItems(); }
+  double advance(double tStop) override {
+    const double dt = inner_->advance(tStop);
+    if (inner_->step() == failAt_)
+      throw SimulationError("cell 7 (i = 7, k = 0): density -1 g/cm^3 at step " +
+                            std::to_string(failAt_));
+    return dt;
+  }
+  Snapshot snapshot() const override { return inner_->snapshot(); }
+  Totals totals() const override { return inner_->totals(); }
+  void writeCheckpoint(std::ostream& o) const override { inner_->writeCheckpoint(o); }
+  void readCheckpoint(std::istream& i) override { inner_->readCheckpoint(i); }
+
+ private:
+  std::unique_ptr<Solver> inner_;
+  long failAt_;
+};
+}  // namespace
+
+TEST(Driver, FailedRunStopsWithDiagnosticAndKeepsEarlierSnapshots) {
+  const fs::path out = freshDir("failing");
+  auto o = smallImpact("tvd", out);
+  const int rc = app::runScene(o, [&](const cases::Scene& s) {
+    return std::make_unique<FailingSolver>(app::createSolver(s), 12);
+  });
+  EXPECT_EQ(rc, app::kSimulationFailed);
+  const auto snaps = snapshots(out);
+  ASSERT_GE(snaps.size(), 1u);  // the t = 0 snapshot (and any written before step 12)
+  for (const auto& f : snaps) {
+    const Snapshot s = io::readHdf5(f);  // complete and readable
+    EXPECT_LT(s.step, 12);
+  }
+  const auto failed = snapshots(out, "failed_");
+  ASSERT_EQ(failed.size(), 1u);
+  EXPECT_EQ(io::readHdf5(failed[0]).step, 12);
+  const json sum = readJson(out / "summary.json");
+  EXPECT_EQ(sum["status"], "failed");
+  EXPECT_NE(sum["error"].get<std::string>().find("cell 7"), std::string::npos);
+}
+
+// SIGKILL gives the run no chance to clean up: every snapshot under its final name must still be
+// complete, because each was written under a temporary name and renamed.
+TEST(Driver, SigkillLeavesEverySnapshotReadable) {
+  const fs::path out = freshDir("sigkill");
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const std::string sc = scene("default").string(), o = out.string();
+    ::freopen("/dev/null", "w", stderr);
+    // Frequent outputs make it likely that the kill lands inside a write.
+    execl(HVI_EXE, HVI_EXE, "run", sc.c_str(), "--out", o.c_str(), "--quiet", "--set",
+          "output.times=[\"0.1 us\",\"0.2 us\",\"0.3 us\",\"0.4 us\",\"0.5 us\",\"0.6 us\",\"0.7 us\",\"0.8 us\"]",
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  for (int i = 0; i < 600 && snapshots(out).size() < 3; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_EQ(::kill(pid, SIGKILL), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  const auto snaps = snapshots(out);
+  ASSERT_GE(snaps.size(), 3u);
+  for (const auto& f : snaps) EXPECT_NO_THROW(io::readHdf5(f)) << f;
+  EXPECT_NO_THROW((void)readJson(out / "timeseries.json"));
 }

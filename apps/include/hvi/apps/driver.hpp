@@ -1,6 +1,7 @@
 //! @file The run driver behind `hvi run`: steps a solver to the end time, writes outputs.
 #pragma once
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -33,5 +34,10 @@ std::unique_ptr<Solver> createSolver(const cases::Scene& scene);
 
 //! Runs a scene; returns an ExitCode. Diagnostics go to stderr.
 int runScene(const RunOptions& opts);
+
+//! Same, with the solver built by `factory` instead of createSolver (tests use it to wrap a
+//! solver).
+using SolverFactory = std::function<std::unique_ptr<Solver>(const cases::Scene&)>;
+int runScene(const RunOptions& opts, const SolverFactory& factory);
 
 }  // namespace hvi::app
