@@ -45,7 +45,12 @@ int main(int argc, char** argv) {
   cmpCmd->add_option("b", cmpB, "Snapshot (.h5) or run folder")->required();
   hvi::compare::addCliOptions(*cmpCmd, cmp);
 
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help and --version are "errors" with status 0; every real one is bad input.
+    return app.exit(e) == 0 ? hvi::app::kOk : hvi::app::kBadInput;
+  }
 
   if (*runCmd) return hvi::app::runScene(run);
   if (*checkCmd) {
