@@ -213,6 +213,13 @@ def write_outputs(rows, cross, args, elapsed):
             print(f"study: wrote {os.path.join(args.figures, f'study_{p}.png')}")
     with open(os.path.join(args.out, "study_tables.md"), "w") as f:
         f.write(an.markdown(rows, summary, targets, cross))
+    for p in dict.fromkeys(r["problem"] for r in rows):
+        prob = PROBLEMS.get(p)
+        if prob and prob["kind"] == "exact" and prob["exact"][0] == "python":
+            path = os.path.join(args.figures, f"study_profiles_{p}.png")
+            if an.plot_profiles(rows, p, prob["exact"][1], prob["end"], prob["window"], path,
+                                profile_loader(prob["end"])):
+                print(f"study: wrote {path}")
     print_summary(summary, targets)
     for p, lst in cross.items():
         print(f"\n{p}: SPH against TVD at the same resolution (rel L1 over material, min IoU)")
@@ -221,6 +228,13 @@ def write_outputs(rows, cross, args, elapsed):
             print(f"  {c['method']:20s} h = {c['resolution']:<6g} {c['rel_l1']:.3f}  {iou}")
     print(f"study: {len(rows)} rows in {os.path.join(args.out, 'study.csv')}, "
           f"{elapsed:.0f} s in all")
+
+
+def profile_loader(end):
+    def load(run_dir):
+        s = ms.load_samples(ms.snapshot_at(os.path.join(ROOT, run_dir), end))
+        return s["x"], s["rho"]
+    return load
 
 
 def print_summary(summary, targets):

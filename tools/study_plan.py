@@ -11,6 +11,7 @@ SCENES = os.path.join(ROOT, "cases", "scenes")
 # carry the same number of rows.
 STRIP_ROWS = 8
 
+# Modified SPH (the project's: mass adjustment); "traditional" drops mass_adjustment.
 SPH_EFFECTS_1D = ["artificial_viscosity", "mass_adjustment"]
 
 PROBLEMS = {
@@ -57,15 +58,17 @@ SWEEPS = {
     "full": {
         "res_1d": [0.02, 0.01, 0.005, 0.0025, 0.00125],
         "tvd_1d": ["minmod", "van_leer", "superbee"],
-        # (kernel, alpha): the default, the other kernel, and alpha halved and doubled.
-        "sph_1d": [("gaussian", 1.0), ("cubic_spline", 1.0), ("gaussian", 0.5), ("gaussian", 2.0)],
-        "res_impact": [0.1, 0.08, 0.06, 0.04], "ref_impact": 0.03, "end_impact": 5.0,
+        # (kernel, alpha, modified): the default, the other kernel, alpha halved and doubled,
+        # and traditional SPH (no mass adjustment).
+        "sph_1d": [("gaussian", 1.0, True), ("cubic_spline", 1.0, True), ("gaussian", 0.5, True),
+                   ("gaussian", 2.0, True), ("gaussian", 1.0, False)],
+        "res_impact": [0.08, 0.06, 0.04, 0.03, 0.02], "ref_impact": 0.0125, "end_impact": 5.0,
     },
     "quick": {
         "res_1d": [0.02, 0.01, 0.005],
         "tvd_1d": ["minmod", "superbee"],
-        "sph_1d": [("gaussian", 1.0)],
-        "res_impact": [0.12, 0.1], "ref_impact": 0.08, "end_impact": 1.0,
+        "sph_1d": [("gaussian", 1.0, True), ("gaussian", 1.0, False)],
+        "res_impact": [0.1, 0.08], "ref_impact": 0.06, "end_impact": 2.0,
         "impact_methods": [("tvd", "minmod"), ("sph", "modified")],
     },
 }
@@ -100,11 +103,13 @@ def runs_1d(problem, sw, out):
             sets = geom + ["solver=tvd", f'tvd.cell_size="{cm(h)}"', f"tvd.limiter={lim}",
                            "effects=" + toml_list(p["effects"]["tvd"])]
             runs.append(_run(problem, "tvd", lim, h, p["scene"], sets, p["end"], cells / h, out))
-        for kernel, alpha in sw["sph_1d"]:
+        for kernel, alpha, modified in sw["sph_1d"]:
+            effects = [e for e in p["effects"]["sph"] if modified or e != "mass_adjustment"]
             sets = geom + ["solver=sph", f'sph.spacing="{cm(h)}"', f"sph.kernel={kernel}",
-                           f"sph.alpha={alpha:g}", "effects=" + toml_list(p["effects"]["sph"])]
-            runs.append(_run(problem, "sph", f"{kernel} a={alpha:g}", h, p["scene"], sets,
-                             p["end"], 5 * cells / h, out))
+                           f"sph.alpha={alpha:g}", "effects=" + toml_list(effects)]
+            option = f"{kernel} a={alpha:g}" + ("" if modified else " trad")
+            runs.append(_run(problem, "sph", option, h, p["scene"], sets, p["end"], 5 * cells / h,
+                             out))
     return runs
 
 

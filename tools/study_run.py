@@ -11,8 +11,11 @@ import study_exact as ex
 import study_measure as ms
 
 
-def _args_record(run, threads):
-    return {"scene": run["scene"], "sets": run["sets"], "threads": threads}
+def _args_record(hvi, run, threads):
+    # The binary's size and time stamp: a rebuilt hvi invalidates reused runs.
+    st = os.stat(hvi)
+    return {"scene": run["scene"], "sets": run["sets"], "threads": threads,
+            "hvi": [st.st_size, int(st.st_mtime)]}
 
 
 def run_hvi(hvi, run, threads, reuse, timeout=3600):
@@ -21,11 +24,12 @@ def run_hvi(hvi, run, threads, reuse, timeout=3600):
     d = run["dir"]
     rec_path = os.path.join(d, "study_args.json")
     summ_path = os.path.join(d, "summary.json")
-    record = _args_record(run, threads)
+    record = _args_record(hvi, run, threads)
     if reuse and os.path.exists(summ_path) and os.path.exists(rec_path):
         with open(rec_path) as f, open(summ_path) as g:
             old, summ = json.load(f), json.load(g)
-        if old == record and summ.get("status") == "completed":
+        old_args = {k: old.get(k) for k in record}
+        if old_args == record and summ.get("status") == "completed":
             summ["_load_before"] = old.get("load_before")
             summ["_cpu_seconds"] = old.get("cpu_seconds")
             return summ

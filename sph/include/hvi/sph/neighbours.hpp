@@ -1,0 +1,53 @@
+//! @file Cell-linked list and fixed-stride neighbour lists (O(N) search).
+#pragma once
+#include <cstddef>
+#include <vector>
+
+namespace hvi::sph {
+
+//! Points binned into square cells, row-major with x fastest, and sorted by cell, so that the
+//! cells of one row around a point are one contiguous range of the sorted order.
+class CellGrid {
+ public:
+  //! Bins points [0, n) into cells of side `cellSize` (the list builder uses half the largest
+  //! search radius and scans 5 x 5 cells). The grid covers
+  //! the points' bounding box; if that would need more than ~4 n cells, the cells are enlarged.
+  void build(const double* x, const double* z, const double* h, std::size_t n, double cellSize);
+
+  [[nodiscard]] int nx() const { return nx_; }
+  [[nodiscard]] int nz() const { return nz_; }
+  [[nodiscard]] int cellX(double x) const;
+  [[nodiscard]] int cellZ(double z) const;
+  //! Sorted-order range [begin(c), begin(c + 1)) of cell c = k * nx + i.
+  [[nodiscard]] int begin(int cell) const { return start_[static_cast<std::size_t>(cell)]; }
+  //! Original index, x, z, h of the point at sorted position s.
+  [[nodiscard]] const int* order() const { return order_.data(); }
+  [[nodiscard]] const double* sortedX() const { return sx_.data(); }
+  [[nodiscard]] const double* sortedZ() const { return sz_.data(); }
+  [[nodiscard]] const double* sortedH() const { return sh_.data(); }
+
+ private:
+  int nx_ = 0, nz_ = 0;
+  double x0_ = 0.0, z0_ = 0.0, inv_ = 1.0;
+  std::vector<int> start_, order_, cellOf_, next_;
+  std::vector<double> sx_, sz_, sh_;
+};
+
+//! Neighbours of each real particle i in slots [i * stride, i * stride + count[i]) (a CSR
+//! with a fixed row stride, so the rows are filled in parallel without a counting pass; the
+//! stride grows when a row overflows). With each neighbour the kernel value W_ij found when the
+//! list was built, so that the first force pass of a step needs no exponential.
+struct NeighbourList {
+  std::size_t stride = 0;
+  std::vector<int> count;
+  std::vector<int> index;
+  std::vector<double> w;
+};
+
+//! Brute-force-checkable entry point: lists, for the first `nReal` of `n` points, every other
+//! point j with |x_i - x_j| < radiusFactor * (h_i + h_j) / 2, in cell-sweep order.
+void buildNeighbourList(const double* x, const double* z, const double* h, std::size_t n,
+                        std::size_t nReal, double radiusFactor, CellGrid& grid,
+                        NeighbourList& list);
+
+}  // namespace hvi::sph

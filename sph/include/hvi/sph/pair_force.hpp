@@ -1,0 +1,71 @@
+//! @file The pair term of the momentum, energy and continuity sums, planar and r-z (pure).
+#pragma once
+#include "hvi/sph/viscosity.hpp"
+
+namespace hvi::sph {
+
+//! What one side of a pair contributes. In planar geometry mu = m, rw = 1, q = P / rho^2 and
+//! lam = 0. In r-z (docs/sph-rz.md) mu = m / (2 pi r) is the planar kernel weight of the ring
+//! mass m, rw = r its radius, q = r P / rho^2 and lam = -v_r / r the rate d(ln mu)/dt.
+struct PairState {
+  double x, z, vx, vz;  //!< cm, cm/us
+  double rho, c, h;     //!< g/cm^3, cm/us, cm
+  double mu, rw, q, lam;
+};
+
+//! Summands of particle a's sums for neighbour b. The driver adds them up over b and, in r-z,
+//! divides the momentum and energy sums by r_a and adds the hoop terms (docs/sph-rz.md):
+//!   dv_a/dt   = (1/r_a) sum ax,az + e_r H_a / r_a^2
+//!   de_a/dt   = (1/r_a) sum de    + lam_a H_a / r_a
+//!   drho_a/dt = sum drho (+ the self term mu_a lam_a W_aa),   H_a = sum hoop (+ self term).
+//! With r = 1 these are METHOD.md's planar equations exactly.
+struct PairResult {
+  double ax = 0.0, az = 0.0;  //!< -mu_b (q_a + q_b + rbar Pi) grad_a W_ab
+  double de = 0.0;            //!< mu_b (q_a + q_b + rbar Pi) v_ab . grad_a W_ab / 2
+  double drho = 0.0;          //!< mu_b v_ab . grad_a W_ab + mu_b lam_b W_ab
+  double hoop = 0.0;          //!< mu_b q_b W_ab
+  double phi = 0.0;           //!< viscosity phi_ab (<= 0), for the time-step limit
+};
+
+//! `w` is W(|x_a - x_b|, h_ab) (cached or freshly computed); K supplies grad W from it.
+//! `Viscous` = false removes the Pi term at compile time (effect artificial_viscosity absent);
+//! `RZ` = false drops the radius weights (planar: rw = 1, lam = 0, hoop unused).
+//! `ih2` = 1 / h_ab^2 (precomputed by the caller).
+template <class K, bool RZ, bool Viscous>
+inline PairResult pairTerms(const PairState& a, const PairState& b, double w, double ih2,
+                            const MonaghanViscosity& visc) {
+  const double dx = a.x - b.x, dz = a.z - b.z;
+  const double r2 = dx * dx + dz * dz;
+  const double h = 0.5 * (a.h + b.h);
+  const double f = K::gradFactor(w, r2, h, ih2);
+  const double gx = f * dx, gz = f * dz;
+  const double dvx = a.vx - b.vx, dvz = a.vz - b.vz;
+  const double vdg = dvx * gx + dvz * gz;
+  double coef = a.q + b.q;
+  PairResult res;
+  if constexpr (Viscous) {
+    const double pi = visc(dvx * dx + dvz * dz, r2, h, 0.5 * (a.c + b.c), 0.5 * (a.rho + b.rho),
+                           res.phi);
+    coef += RZ ? 0.5 * (a.rw + b.rw) * pi : pi;
+  }
+  const double mc = b.mu * coef;
+  res.ax = -mc * gx;
+  res.az = -mc * gz;
+  res.de = 0.5 * mc * vdg;
+  if constexpr (RZ) {
+    res.drho = b.mu * (vdg + b.lam * w);
+    res.hoop = b.mu * b.q * w;
+  } else {
+    res.drho = b.mu * vdg;
+  }
+  return res;
+}
+
+template <class K, bool RZ, bool Viscous>
+inline PairResult pairTerms(const PairState& a, const PairState& b, double w,
+                            const MonaghanViscosity& visc) {
+  const double h = 0.5 * (a.h + b.h);
+  return pairTerms<K, RZ, Viscous>(a, b, w, 1.0 / (h * h), visc);
+}
+
+}  // namespace hvi::sph

@@ -1,0 +1,45 @@
+//! @file The pair loops of a step, one instantiation per (kernel, geometry, viscosity) policy.
+#pragma once
+#include <cstddef>
+
+#include "detail/arrays.hpp"
+#include "detail/axis_correction.hpp"
+#include "hvi/cases/scene.hpp"
+#include "hvi/sph/neighbours.hpp"
+#include "hvi/sph/viscosity.hpp"
+
+namespace hvi::sph::detail {
+
+//! Rates of the real particles, written by a force pass.
+struct Rates {
+  double* ax;
+  double* az;
+  double* de;
+  double* drho;  //!< continuity rate (cached pass only)
+  double* phi;   //!< most negative viscosity phi_ij of the particle (cached pass only)
+};
+
+//! Momentum, energy (and, for the cached pass, continuity) rates of the real particles
+//! [0, nReal) from the pair sums over their neighbour lists. The cached pass reuses the W_ij
+//! stored by the list build (state at the list's positions); the other recomputes W_ij from
+//! the current positions (the predictor's half state).
+//! With `sameObject` the continuity rate sums over the particle's own object only, matching
+//! the summation density of the corrector (momentum and energy always sum over every pair).
+//! `axis` (r-z only, may be null in planar) corrects the hoop term near the axis.
+using ForcePass = void (*)(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
+                           const MonaghanViscosity& visc, const AxisCorrection* axis,
+                           const Rates& out);
+ForcePass selectForcePass(cases::Kernel kernel, bool rz, bool viscous, bool cached,
+                          bool sameObject);
+
+//! Builds the neighbour lists of the real particles among the a.size() points and, if
+//! `rhoOut` is not null, the summation density of the real particles into it (over the
+//! particle's own object with `sameObject`, over all otherwise).
+using ListPass = void (*)(const PairArrays& a, std::size_t nReal, double radiusFactor,
+                          CellGrid& grid, NeighbourList& list, double* rhoOut);
+ListPass selectListPass(cases::Kernel kernel, bool sameObject);
+
+double kernelSupport(cases::Kernel kernel);  //!< in units of h
+double kernelSelf(cases::Kernel kernel, double h);  //!< W(0, h)
+
+}  // namespace hvi::sph::detail

@@ -1,0 +1,51 @@
+//! @file State of the SPH stepper (shared by the step driver and the checkpoint code).
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "detail/arrays.hpp"
+#include "detail/boundary.hpp"
+#include "detail/passes.hpp"
+#include "hvi/sph/stepper.hpp"
+
+namespace hvi::sph {
+
+struct Stepper::Impl {
+  Impl(const ParticleSystem& ps, std::vector<eos::Eos> materials, StepperConfig config);
+
+  void corrector();          // ghosts, list, summation density, EOS, derived values
+  void deriveWeights();      // rw, mu of the reals from their positions and masses
+  void deriveRates();        // q, lam of the reals from P, rho, v
+  void checkState(const char* stage) const;
+  void removeOutflow();
+  double timeStep() const;   // CFL limit from the rates of the cached pass
+
+  StepperConfig cfg;
+  std::vector<eos::Eos> materials;
+  detail::ForcePass passCached = nullptr, passFresh = nullptr;
+  detail::ListPass passList = nullptr;
+  detail::Boundaries bounds;
+  std::unique_ptr<detail::AxisCorrection> axis;  // r-z only
+  double radiusFactor = 0.0;   // list radius / h_ij: kernel support + skin
+  bool rz = false;
+
+  std::size_t n = 0;           // real particles
+  detail::PairArrays a;        // reals, then ghosts
+  std::vector<double> e, m, rhoRef;
+  std::vector<int> mat;
+  std::vector<std::int64_t> id;
+
+  // Step work arrays (reals only), sized once; the step loop allocates nothing.
+  std::vector<double> x0, z0, vx0, vz0, e0, rho0;
+  std::vector<double> ax0, az0, de0, drho0, phi0, ax1, az1, de1;
+  std::vector<unsigned char> keep;
+
+  CellGrid grid;
+  NeighbourList list;
+  double t = 0.0;
+  long steps = 0;
+  Totals out;                  // accumulated outflow
+};
+
+}  // namespace hvi::sph

@@ -1,0 +1,116 @@
+//! @file Mass iteration: masses that make the summation density equal rho0 at t = 0.
+#include "detail/parallel.hpp"
+#include "hvi/sph/mass_adjust.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "detail/boundary.hpp"
+#include "detail/passes.hpp"
+#include "hvi/common/error.hpp"
+
+namespace hvi::sph {
+
+MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) {
+  const std::size_t n = ps.size();
+  const bool rz = opt.geometry == Geometry::Axisymmetric;
+  MassAdjustReport report;
+  if (n == 0) return report;
+  detail::PairArrays a;
+  a.resize(n);
+  double hmax = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    a.x[i] = ps.x[i];
+    a.z[i] = ps.z[i];
+    a.h[i] = ps.h[i];
+    a.obj[i] = ps.object[i];
+    a.mu[i] = 1.0;
+    a.rw[i] = rz ? std::abs(ps.x[i]) : 1.0;
+    hmax = std::max(hmax, ps.h[i]);
+  }
+  // Positions do not move, so the list (radius = kernel support) is built once.
+  const double support = detail::kernelSupport(opt.kernel);
+  detail::Boundaries bounds(opt.domain, opt.geometry);
+  bounds.makeGhosts(a, n, support * hmax);
+  CellGrid grid;
+  NeighbourList list;
+  detail::selectListPass(opt.kernel, false)(a, n, support, grid, list, nullptr);
+
+  std::vector<double> rho(n), self(n);
+  for (std::size_t i = 0; i < n; ++i) self[i] = detail::kernelSelf(opt.kernel, a.h[i]);
+  std::vector<unsigned char> alive(n, 1);
+  std::map<int, double> maxMu;
+  const long nl = static_cast<long>(n);
+  for (;;) {
+    double residual = 0.0;
+    long worst = -1;
+#pragma omp parallel if (nl > detail::kParallelPairs)
+    {
+      double myRes = 0.0;
+      long myWorst = -1;
+#pragma omp for schedule(static)
+      for (long il = 0; il < nl; ++il) {
+        const std::size_t i = static_cast<std::size_t>(il);
+        if (!alive[i]) continue;
+        const int obj = a.obj[i];
+        double sum = a.mu[i] * self[i];
+        const int* nb = list.index.data() + i * list.stride;
+        const double* w = list.w.data() + i * list.stride;
+        for (int k = 0; k < list.count[i]; ++k) {
+          const std::size_t j = static_cast<std::size_t>(nb[k]);
+          if (a.obj[j] == obj) sum += a.mu[j] * w[k];
+        }
+        rho[i] = sum;
+        const double r = std::abs(ps.rhoRef[i] / sum - 1.0);
+        if (r > myRes) {
+          myRes = r;
+          myWorst = il;
+        }
+      }
+#pragma omp critical
+      if (myRes > residual || (myRes == residual && myWorst < worst)) {
+        residual = myRes;
+        worst = myWorst;
+      }
+    }
+    report.maxResidual = residual;
+    if (residual < opt.tolerance) break;
+    if (report.iterations >= opt.maxIterations)
+      throw SimulationError(fmt::format(
+          "mass iteration did not converge in {} iterations: max |rho0/rho - 1| = {:.3e} at "
+          "particle {} (x = {}, z = {} cm, object {}); raise sph.max_mass_iterations or check "
+          "the lattice",
+          report.iterations, residual, ps.id[static_cast<std::size_t>(worst)],
+          ps.x[static_cast<std::size_t>(worst)], ps.z[static_cast<std::size_t>(worst)],
+          ps.object[static_cast<std::size_t>(worst)]));
+    for (std::size_t i = 0; i < n; ++i)
+      if (alive[i]) a.mu[i] *= ps.rhoRef[i] / rho[i];
+    // Deletion compares with the largest *new* weight of the object. METHOD.md writes the old
+    // maximum, but the first update rescales every weight from 1 by ~rho0 dx^2, so against the
+    // old maximum whole bodies would vanish for fine spacings or light materials; after the
+    // first update the two agree to the per-iteration change of the masses.
+    maxMu.clear();
+    for (std::size_t i = 0; i < n; ++i)
+      if (alive[i]) maxMu[a.obj[i]] = std::max(maxMu[a.obj[i]], a.mu[i]);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (alive[i] && a.mu[i] / maxMu[a.obj[i]] < opt.deleteFraction) {
+        // Badly placed: its equilibrium mass would be ~0 or negative (METHOD.md section 3).
+        alive[i] = 0;
+        a.mu[i] = 0.0;
+        ++report.deleted;
+      }
+    }
+    bounds.refreshGhosts(a, n);
+    ++report.iterations;
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    ps.m[i] = rz ? 2.0 * std::numbers::pi * a.rw[i] * a.mu[i] : a.mu[i];
+  if (report.deleted > 0) ps.compact(alive);
+  return report;
+}
+
+}  // namespace hvi::sph

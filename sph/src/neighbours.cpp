@@ -1,0 +1,74 @@
+//! @file Cell-linked list: binning by counting sort.
+#include "hvi/sph/neighbours.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "detail/list_build.hpp"
+#include "hvi/sph/kernel.hpp"
+
+namespace hvi::sph {
+
+int CellGrid::cellX(double x) const {
+  return std::clamp(static_cast<int>((x - x0_) * inv_), 0, nx_ - 1);
+}
+int CellGrid::cellZ(double z) const {
+  return std::clamp(static_cast<int>((z - z0_) * inv_), 0, nz_ - 1);
+}
+
+void CellGrid::build(const double* x, const double* z, const double* h, std::size_t n,
+                     double cellSize) {
+  double xmin = 0.0, xmax = 0.0, zmin = 0.0, zmax = 0.0;
+  if (n > 0) {
+    xmin = xmax = x[0];
+    zmin = zmax = z[0];
+  }
+  for (std::size_t i = 1; i < n; ++i) {
+    xmin = std::min(xmin, x[i]); xmax = std::max(xmax, x[i]);
+    zmin = std::min(zmin, z[i]); zmax = std::max(zmax, z[i]);
+  }
+  // Sparse clouds (debris spread over a large domain) would need many empty cells; beyond
+  // ~4 cells per point larger cells cost less than the empty ones.
+  double size = cellSize;
+  const double maxCells = 4.0 * static_cast<double>(n) + 1024.0;
+  while (((xmax - xmin) / size + 1.0) * ((zmax - zmin) / size + 1.0) > maxCells) size *= 1.5;
+  x0_ = xmin;
+  z0_ = zmin;
+  inv_ = 1.0 / size;
+  nx_ = static_cast<int>((xmax - xmin) * inv_) + 1;
+  nz_ = static_cast<int>((zmax - zmin) * inv_) + 1;
+  const std::size_t ncell = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(nz_);
+  start_.assign(ncell + 1, 0);
+  cellOf_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const int c = cellZ(z[i]) * nx_ + cellX(x[i]);
+    cellOf_[i] = c;
+    ++start_[static_cast<std::size_t>(c) + 1];
+  }
+  for (std::size_t c = 0; c < ncell; ++c) start_[c + 1] += start_[c];
+  order_.resize(n);
+  sx_.resize(n);
+  sz_.resize(n);
+  sh_.resize(n);
+  // Stable counting sort: within a cell the points keep their index order (deterministic).
+  next_.assign(start_.begin(), start_.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) {
+    const int s = next_[static_cast<std::size_t>(cellOf_[i])]++;
+    order_[static_cast<std::size_t>(s)] = static_cast<int>(i);
+  }
+  for (std::size_t s = 0; s < n; ++s) {
+    const int i = order_[s];
+    sx_[s] = x[i];
+    sz_[s] = z[i];
+    sh_[s] = h[i];
+  }
+}
+
+void buildNeighbourList(const double* x, const double* z, const double* h, std::size_t n,
+                        std::size_t nReal, double radiusFactor, CellGrid& grid,
+                        NeighbourList& list) {
+  detail::buildList<GaussianKernel, false>(x, z, h, nullptr, nullptr, n, nReal, radiusFactor, grid, list,
+                                           nullptr);
+}
+
+}  // namespace hvi::sph

@@ -1,0 +1,147 @@
+//! @file Pair-loop drivers: threading, memory layout and the r-z normalisation.
+#include "detail/parallel.hpp"
+#include "detail/passes.hpp"
+
+#include <algorithm>
+
+#include "detail/list_build.hpp"
+#include "hvi/sph/kernel.hpp"
+#include "hvi/sph/pair_force.hpp"
+
+namespace hvi::sph::detail {
+namespace {
+
+inline PairState load(const PairArrays& a, std::size_t i) {
+  return {a.x[i],  a.z[i],  a.vx[i], a.vz[i], a.rho[i], a.c[i],
+          a.h[i],  a.mu[i], a.rw[i], a.q[i],  a.lam[i]};
+}
+
+// Each particle gathers over its own list: a pair is evaluated from both ends, which doubles
+// the arithmetic but needs no atomics or per-thread copies, and makes every sum's order fixed
+// (bit-for-bit reproducible at any thread count).
+template <class K, bool RZ, bool Viscous, bool Cached, bool SameObject>
+void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
+               const MonaghanViscosity& visc, const AxisCorrection* axis, const Rates& out) {
+  const std::size_t stride = list.stride;
+  const long nr = static_cast<long>(nReal);
+#pragma omp parallel for schedule(static) if (nr > kParallelPairs)
+  for (long il = 0; il < nr; ++il) {
+    const std::size_t i = static_cast<std::size_t>(il);
+    const PairState A = load(a, i);
+    const int* nb = list.index.data() + i * stride;
+    const double* wc = list.w.data() + i * stride;
+    const int cnt = list.count[i];
+    const int oi = a.obj[i];
+    const double ih2i = 1.0 / (A.h * A.h);
+    double sax = 0.0, saz = 0.0, sde = 0.0, sdrho = 0.0, shoop = 0.0, phi = 0.0;
+    for (int k = 0; k < cnt; ++k) {
+      const std::size_t j = static_cast<std::size_t>(nb[k]);
+      // Within an object h is constant, so h_ij = h_i for most pairs: skip the division.
+      const double hj = a.h[j];
+      double ih2 = ih2i;
+      if (hj != A.h) {
+        const double hij = 0.5 * (A.h + hj);
+        ih2 = 1.0 / (hij * hij);
+      }
+      double w;
+      if constexpr (Cached) {
+        w = wc[k];
+      } else {
+        const double dx = A.x - a.x[j], dz = A.z - a.z[j];
+        w = K::value(dx * dx + dz * dz, 0.5 * (A.h + hj), ih2);
+      }
+      if (w == 0.0) continue;
+      const PairResult r = pairTerms<K, RZ, Viscous>(A, load(a, j), w, ih2, visc);
+      sax += r.ax;
+      saz += r.az;
+      sde += r.de;
+      if constexpr (Cached) {
+        if constexpr (SameObject) {
+          if (a.obj[j] == oi) sdrho += r.drho;
+        } else {
+          sdrho += r.drho;
+        }
+      }
+      if constexpr (RZ) shoop += r.hoop;
+      if constexpr (Viscous && Cached) phi = std::min(phi, r.phi);
+    }
+    if constexpr (RZ) {
+      // docs/sph-rz.md: the sums carry r_j weights; divide by r_i and add the hoop terms,
+      // whose self parts (j = i) come from d mu_i / d r_i, corrected for the axis bias.
+      const double wii = K::value(0.0, A.h);
+      const double hoop = (shoop + A.mu * A.q * wii) * (*axis)(A.rw, A.h);
+      const double inv = 1.0 / A.rw;
+      const double sgn = A.x >= 0.0 ? 1.0 : -1.0;  // a particle briefly past the axis
+      out.ax[i] = sax * inv + sgn * hoop * inv * inv;
+      out.az[i] = saz * inv;
+      out.de[i] = sde * inv + A.lam * hoop * inv;
+      if constexpr (Cached) out.drho[i] = sdrho + A.mu * A.lam * wii;
+    } else {
+      out.ax[i] = sax;
+      out.az[i] = saz;
+      out.de[i] = sde;
+      if constexpr (Cached) out.drho[i] = sdrho;
+    }
+    if constexpr (Cached) out.phi[i] = phi;
+  }
+}
+
+// The half-state pass computes no continuity rate, so only the cached one depends on the
+// density scope.
+template <class K, bool RZ, bool Viscous>
+ForcePass pick(bool cached, bool same) {
+  if (!cached) return &forcePass<K, RZ, Viscous, false, false>;
+  return same ? &forcePass<K, RZ, Viscous, true, true> : &forcePass<K, RZ, Viscous, true, false>;
+}
+
+template <class K, bool RZ>
+ForcePass pick(bool viscous, bool cached, bool same) {
+  return viscous ? pick<K, RZ, true>(cached, same) : pick<K, RZ, false>(cached, same);
+}
+
+template <class K>
+ForcePass pick(bool rz, bool viscous, bool cached, bool same) {
+  return rz ? pick<K, true>(viscous, cached, same) : pick<K, false>(viscous, cached, same);
+}
+
+template <class K, bool SameObject>
+void listPass(const PairArrays& a, std::size_t nReal, double radiusFactor, CellGrid& grid,
+              NeighbourList& list, double* rhoOut) {
+  if (rhoOut)
+    buildList<K, true, SameObject>(a.x.data(), a.z.data(), a.h.data(), a.mu.data(),
+                                   a.obj.data(), a.size(), nReal, radiusFactor, grid, list,
+                                   rhoOut);
+  else
+    buildList<K, false>(a.x.data(), a.z.data(), a.h.data(), a.mu.data(), a.obj.data(),
+                        a.size(), nReal, radiusFactor, grid, list, nullptr);
+}
+
+template <class K>
+ListPass pickList(bool same) {
+  return same ? &listPass<K, true> : &listPass<K, false>;
+}
+
+}  // namespace
+
+ForcePass selectForcePass(cases::Kernel kernel, bool rz, bool viscous, bool cached,
+                          bool sameObject) {
+  return kernel == cases::Kernel::Gaussian
+             ? pick<GaussianKernel>(rz, viscous, cached, sameObject)
+             : pick<CubicSplineKernel>(rz, viscous, cached, sameObject);
+}
+
+ListPass selectListPass(cases::Kernel kernel, bool sameObject) {
+  return kernel == cases::Kernel::Gaussian ? pickList<GaussianKernel>(sameObject)
+                                           : pickList<CubicSplineKernel>(sameObject);
+}
+
+double kernelSupport(cases::Kernel kernel) {
+  return kernel == cases::Kernel::Gaussian ? GaussianKernel::support : CubicSplineKernel::support;
+}
+
+double kernelSelf(cases::Kernel kernel, double h) {
+  return kernel == cases::Kernel::Gaussian ? GaussianKernel::value(0.0, h)
+                                           : CubicSplineKernel::value(0.0, h);
+}
+
+}  // namespace hvi::sph::detail

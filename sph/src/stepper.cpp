@@ -1,0 +1,274 @@
+//! @file Predictor-corrector step driver (docs/sph.md).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "detail/eos_pass.hpp"
+#include "detail/parallel.hpp"
+#include "detail/stepper_impl.hpp"
+#include "hvi/common/error.hpp"
+
+namespace hvi::sph {
+namespace {
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+}
+
+Stepper::Impl::Impl(const ParticleSystem& ps, std::vector<eos::Eos> mats, StepperConfig config)
+    : cfg(std::move(config)), materials(std::move(mats)), bounds(cfg.domain, cfg.geometry) {
+  rz = cfg.geometry == Geometry::Axisymmetric;
+  if (rz) axis = std::make_unique<detail::AxisCorrection>(cfg.kernel);
+  const bool same = cfg.densitySum == DensitySum::SameObject;
+  passCached = detail::selectForcePass(cfg.kernel, rz, cfg.viscosity, true, same);
+  passFresh = detail::selectForcePass(cfg.kernel, rz, cfg.viscosity, false, same);
+  passList = detail::selectListPass(cfg.kernel, same);
+  if (!(cfg.cfl > 0.0)) throw InputError(fmt::format("sph.cfl = {} must be > 0", cfg.cfl));
+  // A particle moves at most (cfl/2) h_i in the half step (dt <= cfl h_i / |v_i|), so a pair
+  // closes by at most cfl h_ij: a skin of cfl h_ij (plus a margin for rounding) keeps the
+  // list built at x^n complete at the half state.
+  radiusFactor = detail::kernelSupport(cfg.kernel) + cfg.cfl * 1.001;
+  n = ps.size();
+  for (int k : ps.material)
+    if (k < 0 || k >= static_cast<int>(materials.size()))
+      throw InputError(fmt::format("particle material {} is not one of the {} materials", k,
+                                   materials.size()));
+  a.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    a.x[i] = ps.x[i];
+    a.z[i] = ps.z[i];
+    a.vx[i] = ps.vx[i];
+    a.vz[i] = ps.vz[i];
+    a.h[i] = ps.h[i];
+    a.obj[i] = ps.object[i];
+  }
+  e = ps.e;
+  m = ps.m;
+  rhoRef = ps.rhoRef;
+  mat = ps.material;
+  id = ps.id;
+  t = cfg.time;
+  for (auto* v : {&x0, &z0, &vx0, &vz0, &e0, &rho0, &ax0, &az0, &de0, &drho0, &phi0, &ax1, &az1,
+                  &de1})
+    v->resize(n);
+  keep.resize(n);
+  corrector();
+}
+
+void Stepper::Impl::deriveWeights() {
+  const long nl = static_cast<long>(n);
+  if (rz) {
+#pragma omp parallel for schedule(static) if (nl > detail::kParallelElements)
+    for (long i = 0; i < nl; ++i) {
+      a.rw[i] = std::abs(a.x[i]);
+      a.mu[i] = m[i] / (kTwoPi * a.rw[i]);
+    }
+  } else {
+#pragma omp parallel for schedule(static) if (nl > detail::kParallelElements)
+    for (long i = 0; i < nl; ++i) {
+      a.rw[i] = 1.0;
+      a.mu[i] = m[i];
+    }
+  }
+}
+
+void Stepper::Impl::deriveRates() {
+  const long nl = static_cast<long>(n);
+#pragma omp parallel for schedule(static) if (nl > detail::kParallelElements)
+  for (long i = 0; i < nl; ++i) {
+    a.q[i] = a.rw[i] * a.p[i] / (a.rho[i] * a.rho[i]);
+    a.lam[i] = rz ? -a.vx[i] / a.x[i] : 0.0;
+  }
+}
+
+void Stepper::Impl::checkState(const char* stage) const {
+  const long nl = static_cast<long>(n);
+  long bad = nl;
+#pragma omp parallel for schedule(static) if (nl > detail::kParallelElements) reduction(min : bad)
+  for (long i = 0; i < nl; ++i) {
+    const bool ok = std::isfinite(a.x[i]) && std::isfinite(a.z[i]) && std::isfinite(a.vx[i]) &&
+                    std::isfinite(a.vz[i]) && std::isfinite(e[i]) && std::isfinite(a.p[i]) &&
+                    a.rho[i] > 0.0 && std::isfinite(a.rho[i]) && (!rz || a.rw[i] > 0.0);
+    if (!ok) bad = std::min(bad, i);
+  }
+  if (bad == nl) return;
+  const std::size_t i = static_cast<std::size_t>(bad);
+  const int o = a.obj[i];
+  const std::string obj = (o >= 0 && o < static_cast<int>(cfg.objectNames.size()))
+                              ? cfg.objectNames[static_cast<std::size_t>(o)]
+                              : std::to_string(o);
+  throw SimulationError(fmt::format(
+      "SPH {} at step {}, t = {} us: particle {} of object '{}' has x = {}, z = {} cm, "
+      "v = ({}, {}) cm/us, rho = {} g/cm^3, e = {} cm^2/us^2, P = {} Mbar, m = {} g",
+      stage, steps, t, id[i], obj, a.x[i], a.z[i], a.vx[i], a.vz[i], a.rho[i], e[i], a.p[i],
+      m[i]));
+}
+
+void Stepper::Impl::corrector() {
+  deriveWeights();
+  double hmax = 0.0;
+  for (std::size_t i = 0; i < n; ++i) hmax = std::max(hmax, a.h[i]);
+  bounds.makeGhosts(a, n, radiusFactor * hmax);
+  passList(a, n, radiusFactor, grid, list, a.rho.data());
+  detail::evaluateEos(materials, mat.data(), a.rho.data(), e.data(), a.p.data(), a.c.data(), n);
+  checkState("corrector (summation density)");
+  deriveRates();
+  bounds.refreshGhosts(a, n);
+}
+
+double Stepper::Impl::timeStep() const {
+  const long nl = static_cast<long>(n);
+  const double cfl = cfg.cfl, alpha = cfg.visc.alpha, beta = cfg.visc.beta;
+  const bool visc = cfg.viscosity;
+  double dt = std::numeric_limits<double>::infinity();
+#pragma omp parallel for schedule(static) if (nl > detail::kParallelElements) reduction(min : dt)
+  for (long i = 0; i < nl; ++i) {
+    const double v = std::hypot(a.vx[i], a.vz[i]);
+    // Monaghan (1989): signal speed c + 0.6 (alpha c + beta max|phi|); |v| as well, which
+    // also bounds the motion in the half step (the list skin relies on it).
+    double signal = a.c[i] + v;
+    if (visc) signal += 0.6 * (alpha * a.c[i] + beta * std::abs(phi0[i]));
+    double dti = cfl * a.h[i] / signal;
+    const double acc = std::hypot(ax0[i], az0[i]);
+    if (acc > 0.0) dti = std::min(dti, cfl * std::sqrt(a.h[i] / acc));
+    dt = std::min(dt, dti);
+  }
+  return dt;
+}
+
+void Stepper::Impl::removeOutflow() {
+  std::size_t removed = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    bounds.reflect(a.x[i], a.z[i], a.vx[i], a.vz[i]);
+    keep[i] = bounds.outflowed(a.x[i], a.z[i]) ? 0 : 1;
+    if (!keep[i]) {
+      ++removed;
+      out.mass += m[i];
+      if (!rz) out.momentumX += m[i] * a.vx[i];
+      out.momentumZ += m[i] * a.vz[i];
+      out.kinetic += 0.5 * m[i] * (a.vx[i] * a.vx[i] + a.vz[i] * a.vz[i]);
+      out.internal += m[i] * e[i];
+    }
+  }
+  if (removed == 0) return;
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!keep[i]) continue;
+    a.x[k] = a.x[i]; a.z[k] = a.z[i]; a.vx[k] = a.vx[i]; a.vz[k] = a.vz[i];
+    a.h[k] = a.h[i]; a.obj[k] = a.obj[i];
+    e[k] = e[i]; m[k] = m[i]; rhoRef[k] = rhoRef[i]; mat[k] = mat[i]; id[k] = id[i];
+    ++k;
+  }
+  n = k;
+  // Shrinking keeps the capacity: no allocation.
+  a.resize(n);
+  for (auto* v : {&e, &m, &rhoRef, &x0, &z0, &vx0, &vz0, &e0, &rho0, &ax0, &az0, &de0, &drho0,
+                  &phi0, &ax1, &az1, &de1})
+    v->resize(n);
+  mat.resize(n);
+  id.resize(n);
+  keep.resize(n);
+}
+
+Stepper::Stepper(const ParticleSystem& ps, std::vector<eos::Eos> materials, StepperConfig config)
+    : impl_(std::make_unique<Impl>(ps, std::move(materials), std::move(config))) {}
+Stepper::~Stepper() = default;
+
+double Stepper::step(double tStop) {
+  Impl& s = *impl_;
+  if (s.t >= tStop || s.n == 0) return 0.0;
+  detail::PairArrays& a = s.a;
+  const long nl = static_cast<long>(s.n);
+  const detail::Rates ratesN{s.ax0.data(), s.az0.data(), s.de0.data(), s.drho0.data(),
+                             s.phi0.data()};
+  s.passCached(a, s.n, s.list, s.cfg.visc, s.axis.get(), ratesN);
+  double dt = s.timeStep();
+  if (!(dt > 0.0))
+    throw SimulationError(fmt::format("SPH time step {} at step {}, t = {} us is not positive",
+                                      dt, s.steps, s.t));
+  // The last step lands on tStop exactly (an output time).
+  if (s.t + dt >= tStop) dt = tStop - s.t;
+  const double half = 0.5 * dt;
+
+  // Predictor: half step with the rates of state n; density from the continuity equation.
+#pragma omp parallel for schedule(static) if (nl > detail::kParallelElements)
+  for (long i = 0; i < nl; ++i) {
+    s.x0[i] = a.x[i]; s.z0[i] = a.z[i]; s.vx0[i] = a.vx[i]; s.vz0[i] = a.vz[i];
+    s.e0[i] = s.e[i]; s.rho0[i] = a.rho[i];
+    a.x[i] += half * a.vx[i];
+    a.z[i] += half * a.vz[i];
+    a.vx[i] += half * s.ax0[i];
+    a.vz[i] += half * s.az0[i];
+    s.e[i] += half * s.de0[i];
+    a.rho[i] += half * s.drho0[i];
+  }
+  detail::evaluateEos(s.materials, s.mat.data(), a.rho.data(), s.e.data(), a.p.data(),
+                      a.c.data(), s.n);
+  s.deriveWeights();
+  s.checkState("predictor (continuity density)");
+  s.deriveRates();
+  s.bounds.refreshGhosts(a, s.n);
+  const detail::Rates ratesHalf{s.ax1.data(), s.az1.data(), s.de1.data(), nullptr, nullptr};
+  s.passFresh(a, s.n, s.list, s.cfg.visc, s.axis.get(), ratesHalf);
+
+  // Full step with the half-state rates (midpoint rule: second order).
+#pragma omp parallel for schedule(static) if (nl > detail::kParallelElements)
+  for (long i = 0; i < nl; ++i) {
+    a.x[i] = s.x0[i] + dt * a.vx[i];
+    a.z[i] = s.z0[i] + dt * a.vz[i];
+    a.vx[i] = s.vx0[i] + dt * s.ax1[i];
+    a.vz[i] = s.vz0[i] + dt * s.az1[i];
+    s.e[i] = s.e0[i] + dt * s.de1[i];
+  }
+  s.removeOutflow();
+  s.t = (s.t + dt >= tStop) ? tStop : s.t + dt;
+  ++s.steps;
+  s.corrector();
+  return dt;
+}
+
+double Stepper::time() const { return impl_->t; }
+long Stepper::stepCount() const { return impl_->steps; }
+std::size_t Stepper::size() const { return impl_->n; }
+std::size_t Stepper::ghostCount() const { return impl_->bounds.ghostCount(); }
+const NeighbourList& Stepper::neighbours() const { return impl_->list; }
+const StepperConfig& Stepper::config() const { return impl_->cfg; }
+Totals Stepper::outflow() const { return impl_->out; }
+
+ParticleSystem Stepper::particles() const {
+  const Impl& s = *impl_;
+  ParticleSystem ps;
+  ps.resize(s.n);
+  for (std::size_t i = 0; i < s.n; ++i) {
+    ps.x[i] = s.a.x[i]; ps.z[i] = s.a.z[i]; ps.vx[i] = s.a.vx[i]; ps.vz[i] = s.a.vz[i];
+    ps.rho[i] = s.a.rho[i]; ps.e[i] = s.e[i]; ps.p[i] = s.a.p[i]; ps.c[i] = s.a.c[i];
+    ps.m[i] = s.m[i]; ps.h[i] = s.a.h[i]; ps.rhoRef[i] = s.rhoRef[i];
+    ps.material[i] = s.mat[i]; ps.object[i] = s.a.obj[i]; ps.id[i] = s.id[i];
+  }
+  return ps;
+}
+
+Totals Stepper::totals() const {
+  const Impl& s = *impl_;
+  Totals tot = s.out;
+  const long nl = static_cast<long>(s.n);
+  double mass = 0.0, px = 0.0, pz = 0.0, kin = 0.0, inn = 0.0;
+#pragma omp parallel for schedule(static) if (nl > detail::kParallelElements) reduction(+ : mass, px, pz, kin, inn)
+  for (long i = 0; i < nl; ++i) {
+    const double mi = s.m[i], vx = s.a.vx[i], vz = s.a.vz[i];
+    mass += mi;
+    px += mi * vx;
+    pz += mi * vz;
+    kin += 0.5 * mi * (vx * vx + vz * vz);
+    inn += mi * s.e[i];
+  }
+  tot.mass += mass;
+  if (!s.rz) tot.momentumX += px;  // r-z: zero by symmetry
+  tot.momentumZ += pz;
+  tot.kinetic += kin;
+  tot.internal += inn;
+  return tot;
+}
+
+}  // namespace hvi::sph

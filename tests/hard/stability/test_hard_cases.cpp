@@ -1,0 +1,103 @@
+//! @file Hard cases (cases/scenes/hard/) stay numerically stable with both solvers.
+//! Bounds and their reasons: docs/hard_cases.md. Each test prints one "[hard]" line of results.
+#include <gtest/gtest.h>
+
+#include "harness.hpp"
+
+namespace hvi::hard {
+namespace {
+
+//! Smallest allowed dt / (first CFL step) after kSettleSteps. dt = CFL h / (c + |v| + ...) and
+//! the signal speed of the hottest state these cases reach (c of the ~5 Mbar shocked or the
+//! released vapour state plus the flow speed, <= ~4 cm/us) is at most ~5x that of the first
+//! step (1-3 cm/us), so physically dt/dt0 stays above ~0.2 (measured: >= 0.29). A runaway
+//! particle or cell (what this check is for) drives dt down by orders of magnitude within a few
+//! steps; 1e-2 leaves a margin of 20 over the physical bound.
+constexpr double kMinDtRatio = 1e-2;
+
+//! SPH masses never change: each particle keeps its mass bit for bit (checked by id), and the
+//! total in the domain plus what left through outflow sides equals the initial one up to the
+//! summation order: <= N eps with N ~ 1e4 particles.
+constexpr double kSphMassRoundOff = 1e-12;
+
+//! TVD ledger closure: M - M0 equals the sum of the ledger's entries (boundary, interfaces,
+//! owner changes, floors) to round-off accumulated over ~1e3 steps of ~1e4 cells.
+constexpr double kTvdClosure = 1e-10;
+
+struct Bounds {
+  double energy;                   //!< relative total-energy error (see RunResult::energyError)
+  double mass = kSphMassRoundOff;  //!< relative mass error (TVD: made by the vacuum treatment)
+};
+
+//! SPH: the pair sums exchange energy antisymmetrically, so total energy (with what left through
+//! outflow sides) changes only by the error of the second-order (midpoint) time integration,
+//! largest where shocks steepen over a few steps; measured 1.5e-5 to 6e-4 in these cases. 5e-3 is
+//! ~10x the largest; a missing or one-sided term (viscous heating, the energy of removed
+//! particles) costs 1e-2 to 1e-1 of the impact energy and fails it.
+constexpr Bounds kSph{.energy = 5e-3};
+
+//! TVD with marker lines: the scheme is conservative to round-off except at faces next to
+//! another object or to vacuum (ghost-fluid fluxes) and in cells that change owner (re-set from
+//! their neighbours' mean), which by design balance each other only on average, to first order
+//! in dx: a block translating through vacuum is exact; the hot release converges as dx
+//! (1-D slab: -2.8%, -1.5%, -0.75% of the mass at dx = 0.05, 0.025, 0.0125 cm; the 2-D
+//! vapour_release: -6.0%, -3.6%). At dx = 0.05 cm on bodies 0.25-1 cm across that is about one
+//! layer of cells, dx / L = 5-20% of the mass; the energy error is about twice the mass error (the
+//! outermost layer is the fastest). Bounds: 10% of the mass, 20% of the energy. (Without markers
+//! the same scheme conserves vapour_release to 1e-13 in mass and 1.4e-5 in energy.) An error
+//! that does not shrink with dx is a defect whatever its size: docs/hard_cases.md.
+constexpr Bounds kTvd{.energy = 2e-1, .mass = 1e-1};
+
+void expectStable(const RunResult& r, const Bounds& b) {
+  EXPECT_TRUE(r.completed) << r.caseName << " / " << r.solver << " failed at t = " << r.tReached
+                           << " us: " << r.failure;
+  if (!r.completed) return;
+  EXPECT_GT(r.dt0, 0.0);
+  EXPECT_GE(r.minDtRatio, kMinDtRatio) << "at step " << r.minDtStep;
+  EXPECT_TRUE(r.massesBitwise);
+  EXPECT_LE(r.massError, b.mass);
+  EXPECT_LE(r.massClosure, kTvdClosure);
+  EXPECT_LE(r.energyClosure, kTvdClosure);
+  EXPECT_LE(r.energyError, b.energy);
+}
+
+RunResult run(const std::string& name, const std::string& solver) {
+  RunSetup s;
+  s.caseName = name;
+  s.solver = solver;
+  return runHardCase(s);
+}
+
+TEST(HardImpact15, Sph) { expectStable(run("impact_15kms", "sph"), kSph); }
+TEST(HardImpact15, Tvd) { expectStable(run("impact_15kms", "tvd"), kTvd); }
+TEST(HardImpact20, Sph) { expectStable(run("impact_20kms", "sph"), kSph); }
+TEST(HardImpact20, Tvd) { expectStable(run("impact_20kms", "tvd"), kTvd); }
+TEST(HardThinPlate, Sph) { expectStable(run("thin_plate", "sph"), kSph); }
+TEST(HardThinPlate, Tvd) { expectStable(run("thin_plate", "tvd"), kTvd); }
+TEST(HardOblique45, Sph) { expectStable(run("oblique_45", "sph"), kSph); }
+TEST(HardOblique45, Tvd) { expectStable(run("oblique_45", "tvd"), kTvd); }
+TEST(HardDenseStriker, Sph) { expectStable(run("dense_striker", "sph"), kSph); }
+TEST(HardDenseStriker, Tvd) { expectStable(run("dense_striker", "tvd"), kTvd); }
+TEST(HardVapourRelease, Sph) { expectStable(run("vapour_release", "sph"), kSph); }
+TEST(HardVapourRelease, Tvd) { expectStable(run("vapour_release", "tvd"), kTvd); }
+TEST(HardNearContact, Sph) { expectStable(run("near_contact", "sph"), kSph); }
+TEST(HardNearContact, Tvd) { expectStable(run("near_contact", "tvd"), kTvd); }
+TEST(HardThinShell, Sph) { expectStable(run("thin_shell", "sph"), kSph); }
+TEST(HardThinShell, Tvd) { expectStable(run("thin_shell", "tvd"), kTvd); }
+
+// near_contact with the upper block's particles moved down by 0.99 spacing: its lowest row sits
+// 0.01 spacing above the lower block's top row, so pairs of particles of the two bodies start
+// 0.01 spacing apart (r -> 0 in the kernel gradient and the viscosity's phi).
+TEST(HardNearContact, SphCoincidentPairs) {
+  RunSetup s;
+  s.caseName = "near_contact";
+  s.solver = "sph";
+  s.variant = "_pairs";
+  s.make = [](const cases::Scene& scene) {
+    return makeShiftedSph(scene, 1, -0.99 * scene.sph.spacing);
+  };
+  expectStable(runHardCase(s), kSph);
+}
+
+}  // namespace
+}  // namespace hvi::hard

@@ -1,0 +1,63 @@
+//! @file Conservation in a shock problem: mass exactly, momentum to round-off, energy to O(dt^2).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "hvi/sph/sph.hpp"
+#include "sph_test_scenes.hpp"
+
+namespace hvi::sph {
+namespace {
+
+using cases::Effect;
+
+struct Drift {
+  double mass, momentum, energy;
+  long steps;
+};
+
+// A 0.3 x 0.1 cm aluminium block hits an equal block at rest at 2 km/s (shock ~0.19 Mbar),
+// in vacuum, followed through the shock's transit and the release (t = 0.2 us).
+Drift collide(double cfl) {
+  auto s = test::baseScene(Geometry::Planar, -2.0, 2.0, -2.0, 2.0, 0.01,
+                           {Effect::ArtificialViscosity, Effect::MassAdjustment,
+                            Effect::TensionCutoff});
+  s.sph.cfl = cfl;
+  s.materials = {test::aluminium()};
+  s.bodies = {test::rectBody("striker", 0, -0.15, 0.15, 0.0, 0.1, {0.0, -0.2}),
+              test::rectBody("target", 0, -0.15, 0.15, -0.1, 0.0)};
+  test::resolveDensities(s);
+  SphSolver solver(s);
+  const Totals t0 = solver.totals();
+  long steps = 0;
+  while (solver.time() < 0.2) {
+    solver.advance(0.2);
+    ++steps;
+  }
+  const Totals t1 = solver.totals();
+  return {t1.mass - t0.mass, (t1.momentumZ - t0.momentumZ) / std::abs(t0.momentumZ),
+          (t1.energy() - t0.energy()) / t0.energy(), steps};
+}
+
+TEST(Conservation, ShockedBlocksConserveMassMomentumAndEnergy) {
+  const Drift a = collide(0.3), b = collide(0.15), c = collide(0.075);
+  for (const Drift* d : {&a, &b, &c})
+    std::printf("%ld steps: dM = %.1e, dPz/Pz = %.2e, dE/E = %.3e\n", d->steps, d->mass,
+                d->momentum, d->energy);
+  // Masses are constants and nobody leaves the domain: the same sum of the same numbers.
+  EXPECT_EQ(a.mass, 0.0);
+  // Pair forces are antisymmetric to the last bit of their product with the masses; the
+  // drift is round-off, ~1e-16 per step relative to the momentum.
+  EXPECT_LT(std::abs(a.momentum), 1e-13);
+  // Energy: the scheme conserves it exactly in semi-discrete form (pair_force.hpp, tested
+  // there); the midpoint step loses (dt^2/2) sum m a^{n+1/2}.(a^{n+1/2} - a^n) per step, an
+  // O(dt^2) drift at fixed end time. Bound at cfl 0.3: 1e-4 of the total (measured 7e-6; the
+  // impact's first steps, where a jumps from 0, dominate), and the drift must fall faster
+  // than first order once dt is small (0.075 vs 0.15: measured ratio 0.41; second order
+  // would be 0.25, the non-smooth start keeps it above).
+  EXPECT_LT(std::abs(a.energy), 1e-4);
+  EXPECT_LT(std::abs(c.energy), 0.5 * std::abs(b.energy));
+}
+
+}  // namespace
+}  // namespace hvi::sph

@@ -1,0 +1,66 @@
+//! @file Scene builders and error norms shared by the TVD tests.
+#pragma once
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "hvi/cases/scene.hpp"
+#include "hvi/eos/eos.hpp"
+#include "hvi/tvd/tvd.hpp"
+
+namespace hvi::tvd::testing {
+
+//! Uniform state of a body: density, velocity, specific energy.
+struct BodyInit {
+  double rho = 1.0;
+  Vec2 v{};
+  double e = 0.0;
+};
+
+inline cases::Body body(std::string name, int material, cases::Shape shape, BodyInit s) {
+  cases::Body b;
+  b.name = std::move(name);
+  b.material = material;
+  b.shape = std::move(shape);
+  b.density = s.rho;
+  b.velocity = s.v;
+  b.specificEnergy = s.e;
+  return b;
+}
+
+inline cases::Material material(std::string name, eos::Eos eos) {
+  cases::Material m;
+  m.name = std::move(name);
+  m.eos = std::move(eos);
+  return m;
+}
+
+//! A TVD scene with outflow boundaries on the given domain and cell size.
+inline cases::Scene baseScene(double xmin, double xmax, double zmin, double zmax, double h,
+                              Geometry g = Geometry::Planar) {
+  cases::Scene s;
+  s.title = "tvd test";
+  s.geometry = g;
+  s.solver = cases::SolverKind::Tvd;
+  s.domain.xmin = xmin;
+  s.domain.xmax = xmax;
+  s.domain.zmin = zmin;
+  s.domain.zmax = zmax;
+  s.tvd.cellSize = h;
+  s.tvd.cfl = 0.4;
+  s.tvd.limiter = cases::Limiter::Minmod;
+  return s;
+}
+
+//! Runs the solver to time t (exactly).
+inline void runTo(Solver& s, double t) {
+  while (s.time() < t) s.advance(t);
+}
+
+//! Density of cell (i, k).
+inline double rhoAt(const TvdSolver& s, int i, int k) {
+  return s.conserved().rho[static_cast<std::size_t>(k) * s.grid().nx + i];
+}
+
+}  // namespace hvi::tvd::testing

@@ -1,0 +1,75 @@
+//! @file Initial conserved state of the grid from the scene's bodies.
+#include <cmath>
+
+#include "hvi/tvd/tvd.hpp"
+#include "interface_normals.hpp"
+
+namespace hvi::tvd {
+
+// With markers, each cell takes the state of the object that covers most of it (the
+// configuration array from the marker lines), vacuum cells are empty. Without markers the
+// conserved state of a cell is the volume average over 4 x 4 sample points, each in the first
+// body (scene order) that contains it or in vacuum, which there is the single material at half
+// the vacuum density, at rest and at e = 0: bodies keep their mass to the sampling accuracy
+// and a discontinuity crossing a cell starts smeared over that cell only.
+void TvdSolver::initialiseState(const cases::Scene& scene) {
+  const long cells = grid_.cells();
+  const auto n = static_cast<std::size_t>(cells);
+  U_.rho.assign(n, 0.0);
+  U_.mx.assign(n, 0.0);
+  U_.mz.assign(n, 0.0);
+  U_.E.assign(n, 0.0);
+  auto put = [&](std::size_t c, const BodyState& b, double weight) {
+    U_.rho[c] += weight * b.rho;
+    U_.mx[c] += weight * b.rho * b.vx;
+    U_.mz[c] += weight * b.rho * b.vz;
+    U_.E[c] += weight * b.rho * (b.e + 0.5 * (b.vx * b.vx + b.vz * b.vz));
+  };
+
+  if (markersOn_) {
+    markerSet_ = MarkerSet::fromBodies(scene, grid_);
+    markerSet_.rasterize(grid_, owner_, normal_);
+    detail::interfaceNormals(markerSet_, grid_, owner_, normal_, normalLength_);
+    ownerNew_.assign(n, -1);
+    normalNew_.assign(n, Vec2{});
+    vxOld_.assign(n, 0.0);
+    vzOld_.assign(n, 0.0);
+    vxMid_.assign(n, 0.0);
+    vzMid_.assign(n, 0.0);
+    for (std::size_t c = 0; c < n; ++c)
+      if (owner_[c] >= 0) put(c, bodyStates_[static_cast<std::size_t>(owner_[c])], 1.0);
+    return;
+  }
+
+  const BodyState vacuum{0.5 * rhoCut_[static_cast<std::size_t>(singleMaterial_)], 0.0, 0.0, 0.0};
+  constexpr int S = 4;
+  const bool rz = geometry_ == Geometry::Axisymmetric;
+#pragma omp parallel for schedule(static) \
+    num_threads(threads_) if (grid_.cells() >= kParallelCells)
+  for (long c = 0; c < cells; ++c) {
+    const int i = static_cast<int>(c % grid_.nx), k = static_cast<int>(c / grid_.nx);
+    double wsum = 0.0;
+    for (int a = 0; a < S; ++a) {
+      for (int b = 0; b < S; ++b) {
+        const Vec2 p{grid_.x0 + (i + (a + 0.5) / S) * grid_.dx,
+                     grid_.z0 + (k + (b + 0.5) / S) * grid_.dz};
+        const double w = rz ? p.x : 1.0;  // r-z: volume weight r
+        const BodyState* st = &vacuum;
+        for (std::size_t bi = 0; bi < scene.bodies.size(); ++bi)
+          if (cases::contains(scene.bodies[bi].shape, p)) {
+            st = &bodyStates_[bi];
+            break;
+          }
+        put(static_cast<std::size_t>(c), *st, w);
+        wsum += w;
+      }
+    }
+    const auto cc = static_cast<std::size_t>(c);
+    U_.rho[cc] /= wsum;
+    U_.mx[cc] /= wsum;
+    U_.mz[cc] /= wsum;
+    U_.E[cc] /= wsum;
+  }
+}
+
+}  // namespace hvi::tvd

@@ -1,0 +1,301 @@
+//! @file One 1-D sweep of one grid line: Heun predictor-corrector with Harten-Yee TVD fluxes.
+#pragma once
+#include <algorithm>
+#include <cmath>
+
+#include "eos_line.hpp"
+#include "hvi/tvd/contact.hpp"
+#include "hvi/tvd/harten_yee.hpp"
+#include "hvi/tvd/limiter.hpp"
+#include "line_work.hpp"
+
+namespace hvi::tvd::detail {
+
+// Buffer layout: cells 0 and 1 are ghosts, 2..n+1 the line's cells, n+2 and n+3 ghosts; face f
+// lies between cells f and f+1, so faces 1..n+1 bound the line's cells.
+
+using State4 = std::array<std::vector<double>, 4>;
+
+inline void fillGhosts(State4& U, int n, Side left, Side right) {
+  auto side = [&](Side s, int in0, int in1, int g0, int g1) {
+    if (s == Side::Loaded) return;
+    for (int k = 0; k < 4; ++k) {
+      U[k][g0] = U[k][in0];
+      U[k][g1] = U[k][s == Side::Reflect ? in1 : in0];
+    }
+    if (s == Side::Reflect) {
+      U[1][g0] = -U[1][g0];
+      U[1][g1] = -U[1][g1];
+    }
+  };
+  side(left, 2, 3, 1, 0);
+  side(right, n + 1, n, n + 2, n + 3);
+}
+
+//! Interface normal at face f in line coordinates, oriented from cell f to f+1: the sum of the
+//! two cells' marker normals (each turned to point that way); the face normal if none.
+inline void faceNormal(const LineWork& W, int f, double& nn, double& nt) {
+  double sn = 0.0, st = 0.0;
+  for (int c = f; c <= f + 1; ++c) {
+    const double a = W.nn[c], b = W.nt[c];
+    const bool flip = a < 0.0 || (a == 0.0 && b < 0.0);
+    sn += flip ? -a : a;
+    st += flip ? -b : b;
+  }
+  const double len = std::sqrt(sn * sn + st * st);
+  if (len < 1e-12) {
+    nn = 1.0;
+    nt = 0.0;
+  } else {
+    nn = sn / len;
+    nt = st / len;
+  }
+}
+
+//! True unless the cell has rho <= 0, a non-finite value, or an internal energy below zero by
+//! more than rounding of the kinetic energy (cold material at e = 0 sits at +-1 ulp).
+inline bool physical(double rho, double m, double t, double E) {
+  if (!(rho > 0.0) || !std::isfinite(E) || !std::isfinite(m) || !std::isfinite(t)) return false;
+  const double kin = 0.5 * (m * m + t * t) / rho;
+  return E - kin >= -1e-10 * kin;
+}
+
+template <class Lim, bool Radial, bool Markers>
+class LineSolver {
+ public:
+  LineSolver(LineWork& w, const LineSetup& s, const SweepContext& c, LineBudget& b)
+      : W_(w), L_(s), C_(c), B_(b), n_(s.n) {}
+
+  //! Advances the line by dt; false (and `fail` filled) if a cell cannot be kept physical.
+  bool run(LineFailure& fail) {
+    fillGhosts(W_.u0, n_, L_.left, L_.right);
+    for (int k = 0; k < 4; ++k)  // loaded ghost cells (vacuum) keep their values
+      std::copy(W_.u0[k].begin(), W_.u0[k].begin() + n_ + 4, W_.u1[k].begin());
+    if (!stage(W_.u0, fail)) return false;
+    for (int k = 0; k < 4; ++k)
+      std::copy(W_.w[k].begin() + 2, W_.w[k].begin() + n_ + 2, W_.u1[k].begin() + 2);
+    resetThin(W_.u1, 0.5);
+    fillGhosts(W_.u1, n_, L_.left, L_.right);
+    if (!stage(W_.u1, fail)) return false;
+    for (int k = 0; k < 4; ++k) {
+      double* u = W_.u0[k].data();
+      const double* w = W_.w[k].data();
+      for (int j = 2; j < n_ + 2; ++j) u[j] = 0.5 * (u[j] + w[j]);
+    }
+    resetThin(W_.u0, 1.0);
+    return true;
+  }
+
+ private:
+  bool isVacuum(int j) const { return Markers && W_.mat[j] < 0; }
+
+  // W = V + dt L(V) on cells 2..n+1, with the ledger of this stage weighted by 1/2 (Heun).
+  bool stage(State4& V, LineFailure& fail) {
+    const int nb = n_ + 4;
+    primitiveStates(*C_.materials, C_.singleMaterial, Markers ? W_.mat.data() : nullptr, 0, nb,
+                    V[0].data(), V[1].data(), V[2].data(), V[3].data(), W_.cs.data());
+    const CellState* cs = W_.cs.data();
+    for (int j = 0; j < nb; ++j) {
+      if (isVacuum(j)) continue;
+      W_.sqrtRho[j] = std::sqrt(V[0][j]);
+      physicalFlux(V[1][j], V[2][j], V[3][j], cs[j], W_.F[j].data());
+    }
+    for (int f = 0; f <= n_ + 2; ++f) {
+      if (Markers && W_.kind[f] != FaceKind::Regular) {
+        W_.fe[f] = FaceEigen{};
+        continue;
+      }
+      const double dU[4] = {V[0][f + 1] - V[0][f], V[1][f + 1] - V[1][f],
+                            V[2][f + 1] - V[2][f], V[3][f + 1] - V[3][f]};
+      W_.fe[f] = faceEigen(cs[f], cs[f + 1], dU, W_.sqrtRho[f], W_.sqrtRho[f + 1]);
+    }
+    for (int j = 1; j <= n_ + 2; ++j)
+      for (int l = 0; l < kFields; ++l)
+        // The scene's limiter on the two acoustic (genuinely nonlinear) fields; the compressive
+        // superbee on the linearly degenerate ones (entropy, shear), whose discontinuities no
+        // characteristic convergence steepens, so contacts stay 2-3 cells wide instead of
+        // spreading as t^(1/3) (Yee 1989, section 4.6).
+        W_.g[j][l] = (l == 0 || l == 3) ? Lim::g(W_.fe[j - 1].alpha[l], W_.fe[j].alpha[l])
+                                         : Superbee::g(W_.fe[j - 1].alpha[l], W_.fe[j].alpha[l]);
+    for (int f = 1; f <= n_ + 1; ++f) faceFlux(f);
+    wallFaces();
+    for (int j = 2; j <= n_ + 1; ++j) update(V, j);
+
+    // Positivity: recompute with the Rusanov flux the regular faces of any cell the TVD flux
+    // leaves unphysical, then floor what is left of a negative internal energy.
+    bool any = false;
+    for (int j = 2; j <= n_ + 1; ++j) {
+      if (isVacuum(j)) continue;
+      if (!physical(W_.w[0][j], W_.w[1][j], W_.w[2][j], W_.w[3][j])) {
+        W_.fallback[j - 1] = W_.fallback[j] = 1;
+        any = true;
+      }
+    }
+    if (any) {
+      for (int f = 1; f <= n_ + 1; ++f)
+        if (W_.fallback[f] && (!Markers || W_.kind[f] == FaceKind::Regular)) rusanov(V, f);
+      wallFaces();
+      for (int j = 2; j <= n_ + 1; ++j)
+        if (W_.fallback[j - 1] || W_.fallback[j]) update(V, j);
+      std::fill(W_.fallback.begin(), W_.fallback.begin() + n_ + 4, 0);
+      for (int j = 2; j <= n_ + 1; ++j) {
+        if (isVacuum(j)) continue;
+        const int mat = Markers ? W_.mat[j] : C_.singleMaterial;
+        const double r = W_.w[0][j], m = W_.w[1][j], t = W_.w[2][j], E = W_.w[3][j];
+        const bool thin = V[0][j] < C_.rhoThin[mat];
+        if (!(r > 0.0) || !std::isfinite(E) || !std::isfinite(m) || !std::isfinite(t)) {
+          if (!thin) {
+            fail.j = j;
+            fail.rho = r;
+            fail.e = E / r - 0.5 * (m * m + t * t) / (r * r);
+            fail.what = "density not positive or state not finite after the positivity fallback";
+            return false;
+          }
+          // A nearly empty cell that even the first-order flux empties (the wave speeds grew
+          // within the step): it becomes vacuum at rest, the change booked in the ledger.
+          const double fill = 0.5 * C_.rhoCut[mat];
+          const double vol = 0.5 / W_.invVol[j];
+          const double rho0 = std::isfinite(r) ? r : V[0][j];
+          const double m0 = std::isfinite(m) ? m : V[1][j], t0 = std::isfinite(t) ? t : V[2][j];
+          const double E0 = std::isfinite(E) ? E : V[3][j];
+          B_.floors[0] += vol * (fill - rho0);
+          B_.floors[1] -= vol * m0;
+          B_.floors[2] -= vol * t0;
+          B_.floors[3] -= vol * E0;
+          W_.w[0][j] = fill;
+          W_.w[1][j] = W_.w[2][j] = W_.w[3][j] = 0.0;
+          continue;
+        }
+        const double kin = 0.5 * (m * m + t * t) / r;
+        if (E < kin) {
+          if (thin) {  // nearly empty: drop the velocity rather than invent kinetic energy
+            const double vol = 0.5 / W_.invVol[j];
+            B_.floors[1] -= vol * m;
+            B_.floors[2] -= vol * t;
+            B_.floors[3] -= vol * E;
+            W_.w[1][j] = W_.w[2][j] = W_.w[3][j] = 0.0;
+          } else {
+            B_.floors[3] += 0.5 * (kin - E) / W_.invVol[j];
+            W_.w[3][j] = kin;
+          }
+        }
+      }
+    }
+    ledgerFaces();
+    return true;
+  }
+
+  void faceFlux(int f) {
+    const CellState* cs = W_.cs.data();
+    double* FL = W_.fluxL[f].data();
+    double* FR = W_.fluxR[f].data();
+    const FaceKind kind = Markers ? W_.kind[f] : FaceKind::Regular;
+    switch (kind) {
+      case FaceKind::Regular: {
+        const FaceEigen& fe = W_.fe[f];
+        const double delta = C_.entropyFix * (std::abs(fe.u) + fe.c);
+        hartenYeeFlux(fe, W_.g[f].data(), W_.g[f + 1].data(), W_.F[f].data(),
+                      W_.F[f + 1].data(), delta, FL);
+        for (int k = 0; k < 4; ++k) FR[k] = FL[k];
+        return;
+      }
+      case FaceKind::Contact: {
+        double nn, nt;
+        faceNormal(W_, f, nn, nt);
+        const ContactStar s = contactStar(cs[f], cs[f + 1], nn, nt, C_.contactIterations);
+        starFlux(cs[f], s.p, s.uL, nn, nt, FL);
+        starFlux(cs[f + 1], s.p, s.uR, nn, nt, FR);
+        return;
+      }
+      case FaceKind::VacuumRight:
+        freeSurfaceFlux(cs[f], FL);
+        for (int k = 0; k < 4; ++k) FR[k] = 0.0;
+        return;
+      case FaceKind::VacuumLeft:
+        freeSurfaceFlux(cs[f + 1], FR);
+        for (int k = 0; k < 4; ++k) FL[k] = 0.0;
+        return;
+      case FaceKind::Void:
+        for (int k = 0; k < 4; ++k) FL[k] = FR[k] = 0.0;
+        return;
+    }
+  }
+
+  void rusanov(const State4& V, int f) {
+    const CellState& a = W_.cs[f];
+    const CellState& b = W_.cs[f + 1];
+    const double* Fa = W_.F[f].data();
+    const double* Fb = W_.F[f + 1].data();
+    const double UL[4] = {V[0][f], V[1][f], V[2][f], V[3][f]};
+    const double UR[4] = {V[0][f + 1], V[1][f + 1], V[2][f + 1], V[3][f + 1]};
+    const double smax = std::max(std::abs(a.u) + a.c, std::abs(b.u) + b.c);
+    rusanovFlux(UL, UR, Fa, Fb, smax, W_.fluxL[f].data());
+    W_.fluxR[f] = W_.fluxL[f];
+  }
+
+  // A reflecting boundary passes only the normal momentum (pressure): mass, tangential
+  // momentum and energy fluxes are zero there exactly, not only to rounding.
+  void wallFaces() {
+    auto wall = [&](int f) {
+      for (auto* F : {&W_.fluxL[f], &W_.fluxR[f]}) {
+        (*F)[0] = 0.0;
+        (*F)[2] = 0.0;
+        (*F)[3] = 0.0;
+      }
+    };
+    if (L_.left == Side::Reflect) wall(1);
+    if (L_.right == Side::Reflect) wall(n_ + 1);
+  }
+
+  void update(const State4& V, int j) {
+    if (isVacuum(j)) {
+      for (int k = 0; k < 4; ++k) W_.w[k][j] = 0.0;
+      return;
+    }
+    const double lam = C_.dt * W_.invVol[j];
+    const double aR = W_.area[j], aL = W_.area[j - 1];
+    const double* FR = W_.fluxL[j].data();      // leaving through the right face
+    const double* FL = W_.fluxR[j - 1].data();  // entering through the left face
+    for (int k = 0; k < 4; ++k) W_.w[k][j] = V[k][j] - lam * (aR * FR[k] - aL * FL[k]);
+    if constexpr (Radial) W_.w[1][j] += C_.dt * W_.cs[j].p * W_.invR[j];
+  }
+
+  void ledgerFaces() {
+    const double h = 0.5 * C_.dt;  // Heun weight of a stage
+    for (int f = 1; f <= n_ + 1; ++f) {
+      if (f == 1 && L_.leftEdge) {
+        for (int k = 0; k < 4; ++k) B_.boundary[k] += h * W_.area[f] * W_.fluxR[f][k];
+      } else if (f == n_ + 1 && L_.rightEdge) {
+        for (int k = 0; k < 4; ++k) B_.boundary[k] -= h * W_.area[f] * W_.fluxL[f][k];
+      } else if (Markers && W_.kind[f] != FaceKind::Regular) {
+        for (int k = 0; k < 4; ++k)
+          B_.interfaces[k] += h * W_.area[f] * (W_.fluxR[f][k] - W_.fluxL[f][k]);
+      }
+    }
+  }
+
+  // Below the vacuum density a cell is vacuum: it keeps its mass but is set at rest and cold
+  // (P = 0). Left alone, the few ulps of momentum and energy that the fluxes of dense
+  // neighbours leave in it become huge velocities and sound speeds that set the time step.
+  void resetThin(State4& U, double weight) {
+    for (int j = 2; j <= n_ + 1; ++j) {
+      if (isVacuum(j)) continue;
+      const int m = Markers ? W_.mat[j] : C_.singleMaterial;
+      if (U[0][j] >= C_.rhoCut[m] || (U[1][j] == 0.0 && U[2][j] == 0.0 && U[3][j] == 0.0))
+        continue;
+      const double vol = weight / W_.invVol[j];
+      B_.floors[1] -= U[1][j] * vol;
+      B_.floors[2] -= U[2][j] * vol;
+      B_.floors[3] -= U[3][j] * vol;
+      U[1][j] = U[2][j] = U[3][j] = 0.0;
+    }
+  }
+
+  LineWork& W_;
+  const LineSetup& L_;
+  const SweepContext& C_;
+  LineBudget& B_;
+  const int n_;
+};
+
+}  // namespace hvi::tvd::detail

@@ -1,0 +1,99 @@
+//! @file Snapshot fields and integral totals of the TVD state.
+#include <cmath>
+
+#include "eos_line.hpp"
+#include "hvi/common/units.hpp"
+#include "hvi/tvd/tvd.hpp"
+
+namespace hvi::tvd {
+
+Snapshot TvdSolver::snapshot() const {
+  const long cells = grid_.cells();
+  const auto n = static_cast<std::size_t>(cells);
+  Snapshot s;
+  s.time = time_;
+  s.step = step_;
+  s.solver = "tvd";
+  s.geometry = geometry_;
+  s.kind = Snapshot::Kind::Grid;
+  s.grid = grid_;
+  Field rho{"density", units::densityName, 1, std::vector<double>(n, 0.0)};
+  Field p{"pressure", units::pressureName, 1, std::vector<double>(n, 0.0)};
+  Field v{"velocity", units::velocityName, 2, std::vector<double>(2 * n, 0.0)};
+  Field e{"specific_energy", units::energyName, 1, std::vector<double>(n, 0.0)};
+  Field mat{"material", "1", 1, std::vector<double>(n, -1.0)};
+  Field obj{"object", "1", 1, std::vector<double>(n, -1.0)};
+
+  for (int id = 0; id < static_cast<int>(materials_.size()); ++id) {
+    if (!markersOn_ && id != singleMaterial_) continue;
+    std::visit(
+        [&](const auto& eos) {
+#pragma omp parallel for schedule(static) \
+    num_threads(threads_) if (grid_.cells() >= kParallelCells)
+          for (long c = 0; c < cells; ++c) {
+            const auto cc = static_cast<std::size_t>(c);
+            int object = 0;
+            if (markersOn_) {
+              object = owner_[cc];
+              if (object < 0 || objectMaterial_[static_cast<std::size_t>(object)] != id) continue;
+            } else if (!(U_.rho[cc] >= rhoCut_[static_cast<std::size_t>(id)])) {
+              object = -1;  // below the vacuum density: reported as vacuum
+            }
+            const double r = U_.rho[cc];
+            if (!(r > 0.0)) continue;
+            const CellState st = detail::cellState(eos, r, U_.mx[cc], U_.mz[cc], U_.E[cc]);
+            rho.data[cc] = r;
+            p.data[cc] = st.p;
+            v.data[2 * cc] = st.u;
+            v.data[2 * cc + 1] = st.w;
+            e.data[cc] = st.e;
+            if (object >= 0) {
+              mat.data[cc] = id;
+              obj.data[cc] = object;
+            }
+          }
+        },
+        materials_[static_cast<std::size_t>(id)].eos);
+  }
+  s.fields = {std::move(rho), std::move(p), std::move(v), std::move(e), std::move(mat),
+              std::move(obj)};
+  for (const auto& m : materials_) s.materialNames.push_back(m.name);
+  if (markersOn_) {
+    s.objectNames = bodyNames_;
+    s.markers = markerSet_.polylines();
+  } else {
+    // Without marker lines the bodies of the one material are not told apart.
+    std::string all;
+    for (const auto& b : bodyNames_) all += (all.empty() ? "" : "+") + b;
+    s.objectNames = {all};
+  }
+  return s;
+}
+
+Totals TvdSolver::totals() const {
+  const long cells = grid_.cells();
+  double mass = 0.0, px = 0.0, pz = 0.0, kin = 0.0, eint = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : mass, px, pz, kin, eint) \
+    num_threads(threads_) if (grid_.cells() >= kParallelCells)
+  for (long c = 0; c < cells; ++c) {
+    const auto cc = static_cast<std::size_t>(c);
+    const double r = U_.rho[cc];
+    if (!(r > 0.0)) continue;
+    const double vol = cellVolume(c);
+    const double k = 0.5 * (U_.mx[cc] * U_.mx[cc] + U_.mz[cc] * U_.mz[cc]) / r;
+    mass += vol * r;
+    px += vol * U_.mx[cc];
+    pz += vol * U_.mz[cc];
+    kin += vol * k;
+    eint += vol * (U_.E[cc] - k);
+  }
+  Totals t;
+  t.mass = mass;
+  t.momentumX = geometry_ == Geometry::Axisymmetric ? 0.0 : px;
+  t.momentumZ = pz;
+  t.kinetic = kin;
+  t.internal = eint;
+  return t;
+}
+
+}  // namespace hvi::tvd

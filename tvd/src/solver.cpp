@@ -1,0 +1,225 @@
+//! @file TvdSolver: set-up, validation, the time step and the step sequence.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "eos_line.hpp"
+#include "hvi/common/error.hpp"
+#include "hvi/tvd/tvd.hpp"
+#include "workspace.hpp"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace hvi::tvd {
+
+std::unique_ptr<Solver> createSolver(const cases::Scene& scene) {
+  return std::make_unique<TvdSolver>(scene);
+}
+
+TvdSolver::~TvdSolver() = default;
+
+TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
+    : geometry_(scene.geometry),
+      domain_(scene.domain),
+      params_(scene.tvd),
+      options_(options),
+      materials_(scene.materials) {
+  setUpGrid(scene);
+  setUpMaterials(scene);
+#ifdef _OPENMP
+  threads_ = options_.threads > 0 ? options_.threads : omp_get_max_threads();
+#else
+  threads_ = 1;
+#endif
+  const int lineCells = std::max(grid_.nx, grid_.nz);
+  for (int t = 0; t < threads_; ++t) work_.push_back(std::make_unique<Workspace>(lineCells));
+  time_ = scene.tStart;
+  initialiseState(scene);
+}
+
+void TvdSolver::setUpGrid(const cases::Scene& scene) {
+  const auto& p = scene.tvd;
+  const auto& d = scene.domain;
+  if (!(p.cellSize > 0.0) || !std::isfinite(p.cellSize))
+    throw InputError(fmt::format("tvd.cell_size = {} cm: must be a positive length", p.cellSize));
+  if (!(p.cfl > 0.0) || p.cfl > 0.5)
+    throw InputError(fmt::format(
+        "tvd.cfl = {}: must be in (0, 0.5] (the positivity fallback flux needs CFL <= 1/2)",
+        p.cfl));
+  if (!(p.vacuumDensity > 0.0) || p.vacuumDensity >= 1.0)
+    throw InputError(fmt::format(
+        "tvd.vacuum_density = {}: must be a fraction of rho0 in (0, 1)", p.vacuumDensity));
+  if (!(options_.entropyFix >= 0.0) || options_.contactIterations < 0)
+    throw InputError("tvd options: entropyFix must be >= 0 and contactIterations >= 0");
+  const double lx = d.xmax - d.xmin, lz = d.zmax - d.zmin;
+  if (!(lx >= p.cellSize) || !(lz >= p.cellSize))
+    throw InputError(fmt::format(
+        "domain [{}, {}] x [{}, {}] cm is smaller than one cell of tvd.cell_size = {} cm",
+        d.xmin, d.xmax, d.zmin, d.zmax, p.cellSize));
+  const double nxD = std::round(lx / p.cellSize), nzD = std::round(lz / p.cellSize);
+  if (nxD * nzD > 4.0e8)
+    throw InputError(fmt::format("tvd grid of {} x {} cells is too large (at most 4e8 cells)",
+                                 nxD, nzD));
+  if (geometry_ == Geometry::Axisymmetric) {
+    if (d.xmin < 0.0)
+      throw InputError(fmt::format("r-z domain: xmin = {} cm, the radius must be >= 0", d.xmin));
+    if (d.xmin == 0.0 && d.boundary[0] == cases::Boundary::Outflow)
+      throw InputError("r-z domain touching the axis (xmin = 0): boundary xmin must be 'axis'");
+  }
+  grid_.nx = static_cast<int>(nxD);
+  grid_.nz = static_cast<int>(nzD);
+  grid_.x0 = d.xmin;
+  grid_.z0 = d.zmin;
+  grid_.dx = grid_.dz = p.cellSize;
+  faceX_.resize(static_cast<std::size_t>(grid_.nx) + 1);
+  cellX_.resize(static_cast<std::size_t>(grid_.nx));
+  for (int i = 0; i <= grid_.nx; ++i) faceX_[static_cast<std::size_t>(i)] = grid_.x0 + i * grid_.dx;
+  for (int i = 0; i < grid_.nx; ++i)
+    cellX_[static_cast<std::size_t>(i)] = grid_.x0 + (i + 0.5) * grid_.dx;
+}
+
+void TvdSolver::setUpMaterials(const cases::Scene& scene) {
+  if (materials_.empty()) throw InputError("tvd: the scene defines no material");
+  if (scene.bodies.empty()) throw InputError("tvd: the scene defines no body");
+  for (const auto& b : scene.bodies) {
+    if (b.material < 0 || b.material >= static_cast<int>(materials_.size()))
+      throw InputError(fmt::format("body '{}': material index {} is not one of the {} materials",
+                                   b.name, b.material, materials_.size()));
+    bodyNames_.push_back(b.name);
+    objectMaterial_.push_back(b.material);
+    const double rho0 = materials_[static_cast<std::size_t>(b.material)].rho0();
+    bodyStates_.push_back({b.density > 0.0 ? b.density : rho0, b.velocity.x, b.velocity.z,
+                           b.specificEnergy});
+  }
+  for (const auto& m : materials_) {
+    rhoCut_.push_back(params_.vacuumDensity * m.rho0());
+    rhoThin_.push_back(std::max(kThinFraction * m.rho0(), rhoCut_.back()));
+  }
+  markersOn_ = scene.has(cases::Effect::MaterialInterfaces);
+  singleMaterial_ = scene.bodies.front().material;
+  if (!markersOn_) {
+    for (const auto& b : scene.bodies)
+      if (b.material != singleMaterial_)
+        throw InputError(fmt::format(
+            "tvd: bodies '{}' and '{}' are of different materials; a multi-material scene needs "
+            "the effect 'material_interfaces' (marker lines)",
+            scene.bodies.front().name, b.name));
+  }
+}
+
+double TvdSolver::cellVolume(long cell) const {
+  const double a = grid_.dx * grid_.dz;
+  if (geometry_ != Geometry::Axisymmetric) return a;
+  return 2.0 * std::numbers::pi * cellX_[static_cast<std::size_t>(cell % grid_.nx)] * a;
+}
+
+// Largest signal speed max(|u|, |w|) + c over the material cells; also the check that every
+// cell is physical, and (for the markers) the velocity at the start of the step.
+double TvdSolver::signalSpeedPass(bool keepVelocity, long* worstCell) const {
+  const long cells = grid_.cells();
+  double smax = 0.0;
+  long worst = -1, bad = -1;
+  const int nMat = static_cast<int>(materials_.size());
+  for (int id = 0; id < nMat; ++id) {
+    if (!markersOn_ && id != singleMaterial_) continue;
+    std::visit(
+        [&](const auto& eos) {
+#pragma omp parallel \
+    num_threads(threads_) if (grid_.cells() >= kParallelCells)
+          {
+            double sLocal = 0.0;
+            long wLocal = -1, bLocal = -1;
+#pragma omp for schedule(static)
+            for (long c = 0; c < cells; ++c) {
+              if (markersOn_) {
+                const int o = owner_[static_cast<std::size_t>(c)];
+                if (o < 0 || objectMaterial_[static_cast<std::size_t>(o)] != id) continue;
+              }
+              const double r = U_.rho[static_cast<std::size_t>(c)];
+              if (!(r > 0.0)) {
+                if (bLocal < 0) bLocal = c;
+                continue;
+              }
+              const CellState s = detail::cellState(eos, r, U_.mx[static_cast<std::size_t>(c)],
+                                                    U_.mz[static_cast<std::size_t>(c)],
+                                                    U_.E[static_cast<std::size_t>(c)]);
+              const double v = std::max(std::abs(s.u), std::abs(s.w)) + s.c;
+              if (!std::isfinite(v)) {
+                if (bLocal < 0) bLocal = c;
+                continue;
+              }
+              if (v > sLocal) {
+                sLocal = v;
+                wLocal = c;
+              }
+              if (keepVelocity) {
+                vxOld_[static_cast<std::size_t>(c)] = s.u;
+                vzOld_[static_cast<std::size_t>(c)] = s.w;
+              }
+            }
+#pragma omp critical(hvi_tvd_signal)
+            {
+              if (sLocal > smax || (sLocal == smax && wLocal >= 0 && wLocal < worst)) {
+                smax = sLocal;
+                worst = wLocal;
+              }
+              if (bLocal >= 0 && (bad < 0 || bLocal < bad)) bad = bLocal;
+            }
+          }
+        },
+        materials_[static_cast<std::size_t>(id)].eos);
+  }
+  if (bad >= 0) {
+    const auto c = static_cast<std::size_t>(bad);
+    throw SimulationError(fmt::format(
+        "tvd: step {}, t = {:.6g} us: cell (i={}, k={}) is unphysical: rho = {:.6g}, "
+        "momentum = ({:.6g}, {:.6g}), energy density = {:.6g}",
+        step_, time_, bad % grid_.nx, bad / grid_.nx, U_.rho[c], U_.mx[c], U_.mz[c], U_.E[c]));
+  }
+  if (worstCell != nullptr) *worstCell = worst;
+  return smax;
+}
+
+double TvdSolver::stableTimeStep() const {
+  const double s = signalSpeedPass(false, nullptr);
+  return s > 0.0 ? params_.cfl * grid_.dx / s : std::numeric_limits<double>::infinity();
+}
+
+double TvdSolver::advance(double tStop) {
+  if (!(tStop > time_)) return 0.0;
+  long worst = -1;
+  const double smax = signalSpeedPass(markersOn_, &worst);
+  double dt = smax > 0.0 ? params_.cfl * grid_.dx / smax : tStop - time_;
+  if (dt0_ == 0.0) dt0_ = dt;
+  if (!(dt >= 1e-6 * dt0_)) {
+    const auto c = static_cast<std::size_t>(std::max(worst, 0L));
+    throw SimulationError(fmt::format(
+        "tvd: step {}, t = {:.6g} us: time step collapsed to {:.3g} us (first step {:.3g} us); "
+        "fastest cell (i={}, k={}): rho = {:.6g}, signal speed {:.6g} cm/us",
+        step_, time_, dt, dt0_, worst % grid_.nx, worst / grid_.nx, U_.rho[c], smax));
+  }
+  bool last = false;
+  if (time_ + dt >= tStop) {
+    dt = tStop - time_;
+    last = true;
+  }
+  // Strang-alternated splitting: x then z on even steps, z then x on odd steps.
+  if (step_ % 2 == 0) {
+    sweep(0, dt);
+    sweep(1, dt);
+  } else {
+    sweep(1, dt);
+    sweep(0, dt);
+  }
+  if (markersOn_) updateMarkers(dt);
+  time_ = last ? tStop : time_ + dt;
+  ++step_;
+  return dt;
+}
+
+}  // namespace hvi::tvd

@@ -1,0 +1,241 @@
+//! @file Sweep driver: grid lines into contiguous buffers, the line kernel, OpenMP over lines.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "hvi/common/error.hpp"
+#include "hvi/tvd/limiter.hpp"
+#include "hvi/tvd/tvd.hpp"
+#include "line_kernel.hpp"
+#include "workspace.hpp"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace hvi::tvd {
+namespace detail {
+
+LineWork::LineWork(int cells) : capacity(cells) {
+  const auto nb = static_cast<std::size_t>(cells) + 4;
+  for (auto* a : {&u0, &u1, &w})
+    for (auto& v : *a) v.assign(nb, 0.0);
+  cs.assign(nb, CellState{});
+  sqrtRho.assign(nb, 0.0);
+  F.assign(nb, {});
+  fe.assign(nb, FaceEigen{});
+  g.assign(nb, {});
+  fluxL.assign(nb, {});
+  fluxR.assign(nb, {});
+  fallback.assign(nb, 0);
+  owner.assign(nb, -1);
+  mat.assign(nb, -1);
+  nn.assign(nb, 0.0);
+  nt.assign(nb, 0.0);
+  kind.assign(nb, FaceKind::Regular);
+  area.assign(nb, 1.0);
+  invVol.assign(nb, 1.0);
+  invR.assign(nb, 0.0);
+}
+
+}  // namespace detail
+
+namespace {
+
+using detail::FaceKind;
+using detail::Side;
+using LineFn = bool (*)(detail::LineWork&, const detail::LineSetup&,
+                        const detail::SweepContext&, detail::LineBudget&,
+                        detail::LineFailure&);
+
+template <class Lim, bool Radial, bool Markers>
+bool runLine(detail::LineWork& w, const detail::LineSetup& s, const detail::SweepContext& c,
+             detail::LineBudget& b, detail::LineFailure& f) {
+  return detail::LineSolver<Lim, Radial, Markers>(w, s, c, b).run(f);
+}
+
+template <class Lim>
+LineFn pickFor(bool radial, bool markers) {
+  if (radial) return markers ? &runLine<Lim, true, true> : &runLine<Lim, true, false>;
+  return markers ? &runLine<Lim, false, true> : &runLine<Lim, false, false>;
+}
+
+// The limiter, the r-z source and the marker treatment are template parameters of the line
+// kernel, chosen here once per sweep: an effect the scene does not name costs no branch.
+LineFn pickLineFunction(cases::Limiter limiter, bool radial, bool markers) {
+  switch (limiter) {
+    case cases::Limiter::Minmod: return pickFor<Minmod>(radial, markers);
+    case cases::Limiter::VanLeer: return pickFor<VanLeer>(radial, markers);
+    case cases::Limiter::Superbee: return pickFor<Superbee>(radial, markers);
+  }
+  return pickFor<Minmod>(radial, markers);
+}
+
+Side sideOf(cases::Boundary b) {
+  return b == cases::Boundary::Outflow ? Side::Outflow : Side::Reflect;
+}
+
+// Objects of one material are one medium: across their common boundary the flow is computed
+// as inside one object (mass crosses, the configuration array only labels the cells), so an
+// aluminium striker on an aluminium shield loses no mass at the contact. Only a boundary
+// between different materials is a contact with its own flux (slip, no mixing).
+FaceKind faceKind(int ownerL, int ownerR, int matL, int matR) {
+  if (ownerL >= 0 && ownerR >= 0) return matL == matR ? FaceKind::Regular : FaceKind::Contact;
+  if (ownerL >= 0) return FaceKind::VacuumRight;
+  if (ownerR >= 0) return FaceKind::VacuumLeft;
+  return FaceKind::Void;
+}
+
+}  // namespace
+
+void TvdSolver::sweep(int direction, double dt) {
+  const bool xdir = direction == 0;
+  const int nx = grid_.nx;
+  const int N = xdir ? grid_.nx : grid_.nz;
+  const int lines = xdir ? grid_.nz : grid_.nx;
+  const long step = xdir ? 1 : nx;
+  const bool rz = geometry_ == Geometry::Axisymmetric;
+  const bool radial = xdir && rz;
+  const double h = grid_.dx;
+  const LineFn fn = pickLineFunction(params_.limiter, radial, markersOn_);
+
+  detail::SweepContext ctx;
+  ctx.materials = &materials_;
+  ctx.rhoCut = rhoCut_.data();
+  ctx.rhoThin = rhoThin_.data();
+  ctx.singleMaterial = singleMaterial_;
+  ctx.entropyFix = options_.entropyFix;
+  ctx.contactIterations = options_.contactIterations;
+  ctx.dt = dt;
+  const Side lowSide = sideOf(domain_.boundary[xdir ? 0 : 2]);
+  const Side highSide = sideOf(domain_.boundary[xdir ? 1 : 3]);
+  // Normal and tangential momentum of this sweep.
+  double* arrays[4] = {U_.rho.data(), xdir ? U_.mx.data() : U_.mz.data(),
+                       xdir ? U_.mz.data() : U_.mx.data(), U_.E.data()};
+  const int* own = markersOn_ ? owner_.data() : nullptr;
+
+#pragma omp parallel \
+    num_threads(threads_) if (grid_.cells() >= kParallelCells)
+  {
+#ifdef _OPENMP
+    Workspace& ws = *work_[static_cast<std::size_t>(omp_get_thread_num())];
+#else
+    Workspace& ws = *work_[0];
+#endif
+    detail::LineWork& W = ws.line;
+#pragma omp for schedule(dynamic, 2)
+    for (int line = 0; line < lines; ++line) {
+      if (ws.failed) continue;
+      const long base = xdir ? static_cast<long>(line) * nx : line;
+      auto at = [&](int pos) { return base + pos * step; };
+
+      // Window: a marker run updates only the span between the first and last owned cell.
+      int a = 0, b = N;
+      if (own != nullptr) {
+        while (a < N && own[at(a)] < 0) ++a;
+        if (a == N) continue;
+        b = N;
+        while (own[at(b - 1)] < 0) --b;
+        if (a <= 2) a = 0;
+        if (b >= N - 2) b = N;
+      }
+      const int n = b - a;
+      detail::LineSetup setup;
+      setup.n = n;
+      setup.left = a == 0 ? lowSide : Side::Loaded;
+      setup.right = b == N ? highSide : Side::Loaded;
+      setup.leftEdge = a == 0;
+      setup.rightEdge = b == N;
+
+      for (int j = 0; j < n + 4; ++j) {
+        const int pos = a - 2 + j;
+        if (pos < 0 || pos >= N) continue;
+        const long c = at(pos);
+        for (int k = 0; k < 4; ++k) W.u0[k][j] = arrays[k][c];
+      }
+      if (own != nullptr) {
+        for (int j = 0; j < n + 4; ++j) {
+          int pos = a - 2 + j;
+          double sign = 1.0;
+          if (pos < 0) {  // ghost beyond the low end: copy or mirror
+            const bool reflect = lowSide == Side::Reflect;
+            pos = reflect ? -1 - pos : 0;
+            sign = reflect ? -1.0 : 1.0;
+          } else if (pos >= N) {
+            const bool reflect = highSide == Side::Reflect;
+            pos = reflect ? 2 * N - 1 - pos : N - 1;
+            sign = reflect ? -1.0 : 1.0;
+          }
+          const long c = at(pos);
+          const int o = own[c];
+          W.owner[j] = o;
+          W.mat[j] = o >= 0 ? objectMaterial_[static_cast<std::size_t>(o)] : -1;
+          const Vec2 nv = normal_[static_cast<std::size_t>(c)];
+          W.nn[j] = sign * (xdir ? nv.x : nv.z);
+          W.nt[j] = xdir ? nv.z : nv.x;
+        }
+        for (int f = 0; f <= n + 2; ++f)
+          W.kind[f] = faceKind(W.owner[f], W.owner[f + 1], W.mat[f], W.mat[f + 1]);
+      }
+      // Geometry (line units): r-z radial lines have face areas r_f and volumes r_j dr.
+      double lineScale;
+      if (radial) {
+        for (int f = 1; f <= n + 1; ++f) W.area[f] = faceX_[static_cast<std::size_t>(a - 1 + f)];
+        for (int j = 2; j <= n + 1; ++j) {
+          const double r = cellX_[static_cast<std::size_t>(a - 2 + j)];
+          W.invVol[j] = 1.0 / (r * h);
+          W.invR[j] = 1.0 / r;
+        }
+        lineScale = 2.0 * std::numbers::pi * h;
+      } else {
+        std::fill(W.area.begin(), W.area.begin() + n + 4, 1.0);
+        std::fill(W.invVol.begin(), W.invVol.begin() + n + 4, 1.0 / h);
+        lineScale = rz ? 2.0 * std::numbers::pi * cellX_[static_cast<std::size_t>(line)] * h : h;
+      }
+
+      detail::LineBudget lb;
+      detail::LineFailure fail;
+      if (!fn(W, setup, ctx, lb, fail)) {
+        const int pos = a - 2 + fail.j;
+        const int i = xdir ? pos : line, k = xdir ? line : pos;
+        ws.failed = true;
+        ws.message = fmt::format(
+            "tvd: step {} ({} sweep, dt = {:.4g} us): cell (i={}, k={}) at x = {:.6g}, z = {:.6g} "
+            "cm: {} (rho = {:.6g} g/cm^3, e = {:.6g} cm^2/us^2)",
+            step_, xdir ? "x" : "z", dt, i, k, grid_.x0 + (i + 0.5) * h,
+            grid_.z0 + (k + 0.5) * h, fail.what, fail.rho, fail.e);
+        continue;
+      }
+      for (int j = 2; j <= n + 1; ++j) {
+        const long c = at(a - 2 + j);
+        for (int k = 0; k < 4; ++k) arrays[k][c] = W.u0[k][j];
+      }
+      auto add = [&](Budget& B, const std::array<double, 4>& v) {
+        B.mass += lineScale * v[0];
+        (xdir ? B.momentumX : B.momentumZ) += lineScale * v[1];
+        (xdir ? B.momentumZ : B.momentumX) += lineScale * v[2];
+        B.energy += lineScale * v[3];
+      };
+      add(ws.boundary, lb.boundary);
+      add(ws.interfaces, lb.interfaces);
+      add(ws.floors, lb.floors);
+    }
+  }
+  for (auto& w : work_) {
+    ledger_.boundary += w->boundary;
+    ledger_.interfaces += w->interfaces;
+    ledger_.floors += w->floors;
+    w->boundary = w->interfaces = w->floors = Budget{};
+  }
+  for (auto& w : work_) {
+    if (w->failed) {
+      const std::string msg = w->message;
+      for (auto& v : work_) v->failed = false;
+      throw SimulationError(msg);
+    }
+  }
+}
+
+}  // namespace hvi::tvd

@@ -1,0 +1,18 @@
+//! @file The per-thread workspace of TvdSolver (sweep buffers and ledger accumulators).
+#pragma once
+#include <string>
+
+#include "hvi/tvd/tvd.hpp"
+#include "line_work.hpp"
+
+namespace hvi::tvd {
+
+struct TvdSolver::Workspace {
+  explicit Workspace(int lineCells) : line(lineCells) {}
+  detail::LineWork line;
+  Budget boundary, interfaces, floors;
+  bool failed = false;
+  std::string message;
+};
+
+}  // namespace hvi::tvd
