@@ -118,6 +118,7 @@ class LineSolver {
         W_.g[j][l] = (l == 0 || l == 3) ? Lim::g(W_.fe[j - 1].alpha[l], W_.fe[j].alpha[l])
                                          : Superbee::g(W_.fe[j - 1].alpha[l], W_.fe[j].alpha[l]);
     for (int f = 1; f <= n_ + 1; ++f) faceFlux(f);
+    if constexpr (Radial) facePressures();
     wallFaces();
     for (int j = 2; j <= n_ + 1; ++j) update(V, j);
 
@@ -221,6 +222,22 @@ class LineSolver {
     }
   }
 
+  // r-z: the hoop-stress source P/r of the radial momentum takes the mean of the pressures on
+  // the cell's two faces, each from the two-shock Riemann problem between its cells. With the
+  // flux difference this is the gradient form -dP/dr, exact for a uniform pressure, and on the
+  // axis cell the axis face's pressure is that of the flow colliding with its mirror image:
+  // without it nothing stops cold gas at r = 0 (the axis face has zero area), and the
+  // cylindrical Noh shock never forms.
+  void facePressures() {
+    const CellState* cs = W_.cs.data();
+    for (int f = 1; f <= n_ + 1; ++f) {
+      const FaceKind kind = Markers ? W_.kind[f] : FaceKind::Regular;
+      W_.pface[f] = (kind == FaceKind::Regular || kind == FaceKind::Contact)
+                        ? contactStar(cs[f], cs[f + 1], 1.0, 0.0, C_.contactIterations).p
+                        : 0.0;
+    }
+  }
+
   void rusanov(const State4& V, int f) {
     const CellState& a = W_.cs[f];
     const CellState& b = W_.cs[f + 1];
@@ -257,7 +274,7 @@ class LineSolver {
     const double* FR = W_.fluxL[j].data();      // leaving through the right face
     const double* FL = W_.fluxR[j - 1].data();  // entering through the left face
     for (int k = 0; k < 4; ++k) W_.w[k][j] = V[k][j] - lam * (aR * FR[k] - aL * FL[k]);
-    if constexpr (Radial) W_.w[1][j] += C_.dt * W_.cs[j].p * W_.invR[j];
+    if constexpr (Radial) W_.w[1][j] += C_.dt * 0.5 * (W_.pface[j - 1] + W_.pface[j]) * W_.invR[j];
   }
 
   void ledgerFaces() {

@@ -50,6 +50,7 @@ struct LineWork {
   std::vector<FaceKind> kind;
   // Geometry of the line: face area and inverse cell volume (line units), radial source 1/r.
   std::vector<double> area, invVol, invR;
+  std::vector<double> pface;  // r-z radial lines: Riemann pressure at each face
 };
 
 //! Constant for every line of one sweep.

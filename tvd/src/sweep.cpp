@@ -38,6 +38,7 @@ LineWork::LineWork(int cells) : capacity(cells) {
   area.assign(nb, 1.0);
   invVol.assign(nb, 1.0);
   invR.assign(nb, 0.0);
+  pface.assign(nb, 0.0);
 }
 
 }  // namespace detail

@@ -78,18 +78,19 @@ TEST(TvdImpactTube, TillotsonAluminiumAgainstExactRiemann) {
       a.rhoStarL / ex.starDensityLeft() - 1, a.l1, b.pStar, b.pStar / ps - 1, b.rhoStar,
       b.rhoStar / rs - 1, b.rhoStarL, b.rhoStarL / ex.starDensityLeft() - 1, b.l1);
   // The plateaus of a conservative shock-capturing scheme satisfy the Rankine-Hugoniot
-  // relations of the discrete flux exactly once the shock is steady; what remains is the
-  // start-up transient carried along the plateau, a few 1e-3 at these resolutions. Bounds:
-  // 1% in pressure (its Hugoniot is steep: 1% in P is 0.3% in density) and 0.5% in density.
+  // relations of the discrete flux exactly once the shock is steady, so only the start-up
+  // transient carried along the plateau remains (measured: < 1e-4). Bound 1e-3 in pressure and
+  // density: an eigen-structure or EOS-derivative error gives percent-level plateau errors.
   for (const TubeResult* r : {&a, &b}) {
-    EXPECT_NEAR(r->pStar / ps, 1.0, 0.01);
-    EXPECT_NEAR(r->pStarL / ps, 1.0, 0.01);
-    EXPECT_NEAR(r->rhoStar / rs, 1.0, 0.005);
-    EXPECT_NEAR(r->rhoStarL / ex.starDensityLeft(), 1.0, 0.005);
+    EXPECT_NEAR(r->pStar / ps, 1.0, 1e-3);
+    EXPECT_NEAR(r->pStarL / ps, 1.0, 1e-3);
+    EXPECT_NEAR(r->rhoStar / rs, 1.0, 1e-3);
+    EXPECT_NEAR(r->rhoStarL / ex.starDensityLeft(), 1.0, 1e-3);
   }
-  // The L1 error is dominated by the two shocks (first order) and the wall-heating dip at the
-  // contact (fixed number of cells): it must fall at least as h^(1/2).
-  EXPECT_LT(b.l1 / a.l1, 0.71);
+  // The L1 error is dominated by the two shocks (a fixed number of cells wide: first order)
+  // and the wall-heating dip at the contact (also fixed in cells): halving h must at least
+  // cut it to 0.6 (measured 0.48).
+  EXPECT_LT(b.l1 / a.l1, 0.6);
 }
 
 }  // namespace
