@@ -209,8 +209,15 @@ def write_outputs(rows, cross, args, elapsed):
                                            "\nerror against the finest run of the same method"
                                            if PROBLEMS[base]["kind"] == "impact" else "")
         ylabel = PROBLEMS[base]["ylabel"]
-        if an.plot_problem(rows, p, title, ylabel, os.path.join(args.figures, f"study_{p}.png")):
-            print(f"study: wrote {os.path.join(args.figures, f'study_{p}.png')}")
+        chosen = an.COST["key"]
+        # The chosen cost axis under study_<problem>.png; the other one beside it (_cpu / _wall).
+        for key, suffix in ((chosen, ""), ("cpu_seconds" if chosen == "wall_seconds"
+                                           else "wall_seconds", None)):
+            an.set_cost(key)
+            name = f"study_{p}{suffix if suffix is not None else '_' + key.split('_')[0]}.png"
+            if an.plot_problem(rows, p, title, ylabel, os.path.join(args.figures, name)):
+                print(f"study: wrote {os.path.join(args.figures, name)}")
+        an.set_cost(chosen)
     with open(os.path.join(args.out, "study_tables.md"), "w") as f:
         f.write(an.markdown(rows, summary, targets, cross))
     for p in dict.fromkeys(r["problem"] for r in rows):

@@ -97,6 +97,7 @@ def summarise(rows):
             methods[m] = {
                 "order": observed_order([(r["resolution"], r["error"]) for r in conv],
                                         g[0].get("h_ref", 0.0)),
+                "slope": observed_order([(r["resolution"], r["error"]) for r in conv]),
                 "points": len(conv),
                 "finest_error": conv[-1]["error"] if conv else None,
                 "finest_seconds": conv[-1][COST["key"]] if conv else None,
@@ -176,13 +177,14 @@ def markdown(rows, summary, targets, cross):
             out.append(f"| {method_key(r)} | {r['resolution']:g} | {r.get('work_items') or '-'} | "
                        f"{r.get('steps') or '-'} | {cost} | {err} |")
         out.append("")
-        out.append("| method | observed order | finest error | its cost [s] |")
-        out.append("|---|---|---|---|")
+        out.append("| method | observed order | log-log slope | finest error | its cost [s] |")
+        out.append("|---|---|---|---|---|")
         for m, s in sorted(summary.get(p, {}).items()):
             o = f"{s['order']:.2f}" if s["order"] is not None else "-"
+            sl = f"{s['slope']:.2f}" if s["slope"] is not None else "-"
             fe = f"{s['finest_error']:.3g}" if s["finest_error"] is not None else "-"
             ft = f"{s['finest_seconds']:.3g}" if s["finest_seconds"] is not None else "-"
-            out.append(f"| {m} | {o} | {fe} | {ft} |")
+            out.append(f"| {m} | {o} | {sl} | {fe} | {ft} |")
         out.append("")
         for t, d in targets.get(p, {}).items():
             cells = ", ".join(f"{m} {v:.3g} s" if v is not None else f"{m} not reached"

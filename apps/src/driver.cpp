@@ -204,6 +204,11 @@ int runScene(const RunOptions& opts, const SolverFactory& factory) {
   } catch (const InputError& e) {
     fmt::print(stderr, "hvi: {}\n", e.what());
     return kBadInput;
+  } catch (const SimulationError& e) {
+    // Raised while the solver is built (e.g. an exact solution that does not exist for these
+    // states): nothing has run, so there is no state to write.
+    fmt::print(stderr, "hvi: cannot start: {}\n", e.what());
+    return kSimulationFailed;
   }
 }
 
