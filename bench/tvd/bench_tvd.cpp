@@ -1,6 +1,6 @@
 //! @file TVD solver benchmark: cell-update throughput, and CASES.md variant 1 to 7.2 us.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include <chrono>
 #include <cmath>
@@ -75,7 +75,10 @@ cases::Scene variant1() {
   cases::Scene s;
   s.title = "variant 1: sphere on thin plate (r-z)";
   s.geometry = Geometry::Axisymmetric;
-  s.domain = {0.0, 4.5, 2.5, 9.4,
+  s.domain = {0.0,
+              4.5,
+              2.5,
+              9.4,
               {cases::Boundary::Axis, cases::Boundary::Outflow, cases::Boundary::Outflow,
                cases::Boundary::Outflow}};
   s.tvd.cellSize = 0.015;

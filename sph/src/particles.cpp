@@ -1,6 +1,5 @@
 //! @file Bulk operations on the particle arrays.
 #include "hvi/sph/particles.hpp"
-#include <type_traits>
 
 namespace hvi::sph {
 namespace {
@@ -33,23 +32,6 @@ void ParticleSystem::compact(const std::vector<unsigned char>& keep) {
     for (std::size_t i = 0; i < v.size(); ++i)
       if (keep[i]) v[k++] = v[i];
     v.resize(k);
-  });
-}
-
-void ParticleSystem::permute(const std::vector<int>& perm, std::vector<double>& scratchD,
-                             std::vector<std::int64_t>& scratchI) {
-  const std::size_t n = perm.size();
-  scratchD.resize(n);
-  scratchI.resize(n);
-  forEachArray(*this, [&](auto& v) {
-    using T = typename std::decay_t<decltype(v)>::value_type;
-    if constexpr (std::is_same_v<T, double>) {
-      for (std::size_t k = 0; k < n; ++k) scratchD[k] = v[perm[k]];
-      for (std::size_t k = 0; k < n; ++k) v[k] = scratchD[k];
-    } else {
-      for (std::size_t k = 0; k < n; ++k) scratchI[k] = v[perm[k]];
-      for (std::size_t k = 0; k < n; ++k) v[k] = static_cast<T>(scratchI[k]);
-    }
   });
 }
 

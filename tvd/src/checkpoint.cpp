@@ -72,8 +72,8 @@ void TvdSolver::writeCheckpoint(std::ostream& out) const {
   put(out, dt0_);
   put<std::int64_t>(out, step_);
   put<std::int64_t>(out, ownerChangeCount_);
-  for (const Budget* b : {&ledger_.boundary, &ledger_.interfaces, &ledger_.ownerChanges,
-                          &ledger_.floors})
+  for (const Budget* b :
+       {&ledger_.boundary, &ledger_.interfaces, &ledger_.ownerChanges, &ledger_.floors})
     putBudget(out, *b);
   putArray(out, U_.rho);
   putArray(out, U_.mx);
@@ -92,8 +92,8 @@ void TvdSolver::readCheckpoint(std::istream& in) {
     throw InputError("tvd checkpoint: not a TVD solver state (wrong magic number)");
   const auto version = get<std::uint32_t>(in);
   if (version != kVersion)
-    throw InputError(fmt::format("tvd checkpoint: format version {}, this build reads {}",
-                                 version, kVersion));
+    throw InputError(
+        fmt::format("tvd checkpoint: format version {}, this build reads {}", version, kVersion));
   const auto nx = get<std::int32_t>(in), nz = get<std::int32_t>(in);
   const auto rz = get<std::int32_t>(in), markers = get<std::int32_t>(in);
   if (nx != grid_.nx || nz != grid_.nz || (rz == 1) != (geometry_ == Geometry::Axisymmetric) ||
@@ -101,8 +101,8 @@ void TvdSolver::readCheckpoint(std::istream& in) {
     throw InputError(fmt::format(
         "tvd checkpoint: written for a {} x {} {} grid {} markers; this scene gives {} x {} {} "
         "{} markers",
-        nx, nz, rz == 1 ? "r-z" : "planar", markers == 1 ? "with" : "without", grid_.nx,
-        grid_.nz, toString(geometry_), markersOn_ ? "with" : "without"));
+        nx, nz, rz == 1 ? "r-z" : "planar", markers == 1 ? "with" : "without", grid_.nx, grid_.nz,
+        toString(geometry_), markersOn_ ? "with" : "without"));
   const double t = get<double>(in), dt0 = get<double>(in);
   const auto step = get<std::int64_t>(in), changes = get<std::int64_t>(in);
   Ledger ledger;

@@ -1,5 +1,7 @@
 //! @file Initial conserved state of the grid from the scene's bodies.
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "hvi/tvd/tvd.hpp"
 #include "interface_normals.hpp"
@@ -44,31 +46,35 @@ void TvdSolver::initialiseState(const cases::Scene& scene) {
   const BodyState vacuum{0.5 * rhoCut_[static_cast<std::size_t>(singleMaterial_)], 0.0, 0.0, 0.0};
   constexpr int S = 4;
   const bool rz = geometry_ == Geometry::Axisymmetric;
-#pragma omp parallel for schedule(static) \
-    num_threads(threads_) if (grid_.cells() >= kParallelCells)
-  for (long c = 0; c < cells; ++c) {
-    const int i = static_cast<int>(c % grid_.nx), k = static_cast<int>(c / grid_.nx);
-    double wsum = 0.0;
-    for (int a = 0; a < S; ++a) {
-      for (int b = 0; b < S; ++b) {
-        const Vec2 p{grid_.x0 + (i + (a + 0.5) / S) * grid_.dx,
-                     grid_.z0 + (k + (b + 0.5) / S) * grid_.dz};
-        const double w = rz ? p.x : 1.0;  // r-z: volume weight r
-        const BodyState* st = &vacuum;
-        for (std::size_t bi = 0; bi < scene.bodies.size(); ++bi)
-          if (cases::contains(scene.bodies[bi].shape, p)) {
-            st = &bodyStates_[bi];
-            break;
-          }
-        put(static_cast<std::size_t>(c), *st, w);
-        wsum += w;
+  const std::size_t nb = scene.bodies.size();
+#pragma omp parallel num_threads(threads_) if (grid_.cells() >= kParallelCells)
+  {
+    // Weights are summed per body and the states combined in body order, so the result does
+    // not depend on the order of the samples: mirror-image cells get bitwise mirrored states.
+    std::vector<double> weight(nb + 1);
+#pragma omp for schedule(static)
+    for (long c = 0; c < cells; ++c) {
+      const int i = static_cast<int>(c % grid_.nx), k = static_cast<int>(c / grid_.nx);
+      std::fill(weight.begin(), weight.end(), 0.0);
+      for (int a = 0; a < S; ++a) {
+        for (int b = 0; b < S; ++b) {
+          const Vec2 p{grid_.x0 + (i + (a + 0.5) / S) * grid_.dx,
+                       grid_.z0 + (k + (b + 0.5) / S) * grid_.dz};
+          std::size_t owner = nb;  // vacuum
+          for (std::size_t bi = 0; bi < nb; ++bi)
+            if (cases::contains(scene.bodies[bi].shape, p)) {
+              owner = bi;
+              break;
+            }
+          weight[owner] += rz ? p.x : 1.0;  // r-z: volume weight r
+        }
       }
+      double wsum = 0.0;
+      for (double w : weight) wsum += w;
+      const auto cc = static_cast<std::size_t>(c);
+      for (std::size_t bi = 0; bi <= nb; ++bi)
+        if (weight[bi] > 0.0) put(cc, bi < nb ? bodyStates_[bi] : vacuum, weight[bi] / wsum);
     }
-    const auto cc = static_cast<std::size_t>(c);
-    U_.rho[cc] /= wsum;
-    U_.mx[cc] /= wsum;
-    U_.mz[cc] /= wsum;
-    U_.E[cc] /= wsum;
   }
 }
 

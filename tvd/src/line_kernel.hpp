@@ -105,8 +105,8 @@ class LineSolver {
         W_.fe[f] = FaceEigen{};
         continue;
       }
-      const double dU[4] = {V[0][f + 1] - V[0][f], V[1][f + 1] - V[1][f],
-                            V[2][f + 1] - V[2][f], V[3][f + 1] - V[3][f]};
+      const double dU[4] = {V[0][f + 1] - V[0][f], V[1][f + 1] - V[1][f], V[2][f + 1] - V[2][f],
+                            V[3][f + 1] - V[3][f]};
       W_.fe[f] = faceEigen(cs[f], cs[f + 1], dU, W_.sqrtRho[f], W_.sqrtRho[f + 1]);
     }
     for (int j = 1; j <= n_ + 2; ++j)
@@ -116,7 +116,7 @@ class LineSolver {
         // characteristic convergence steepens, so contacts stay 2-3 cells wide instead of
         // spreading as t^(1/3) (Yee 1989, section 4.6).
         W_.g[j][l] = (l == 0 || l == 3) ? Lim::g(W_.fe[j - 1].alpha[l], W_.fe[j].alpha[l])
-                                         : Superbee::g(W_.fe[j - 1].alpha[l], W_.fe[j].alpha[l]);
+                                        : Superbee::g(W_.fe[j - 1].alpha[l], W_.fe[j].alpha[l]);
     for (int f = 1; f <= n_ + 1; ++f) faceFlux(f);
     if constexpr (Radial) facePressures();
     wallFaces();
@@ -195,8 +195,8 @@ class LineSolver {
       case FaceKind::Regular: {
         const FaceEigen& fe = W_.fe[f];
         const double delta = C_.entropyFix * (std::abs(fe.u) + fe.c);
-        hartenYeeFlux(fe, W_.g[f].data(), W_.g[f + 1].data(), W_.F[f].data(),
-                      W_.F[f + 1].data(), delta, FL);
+        hartenYeeFlux(fe, W_.g[f].data(), W_.g[f + 1].data(), W_.F[f].data(), W_.F[f + 1].data(),
+                      delta, FL);
         for (int k = 0; k < 4; ++k) FR[k] = FL[k];
         return;
       }
@@ -298,8 +298,7 @@ class LineSolver {
     for (int j = 2; j <= n_ + 1; ++j) {
       if (isVacuum(j)) continue;
       const int m = Markers ? W_.mat[j] : C_.singleMaterial;
-      if (U[0][j] >= C_.rhoCut[m] || (U[1][j] == 0.0 && U[2][j] == 0.0 && U[3][j] == 0.0))
-        continue;
+      if (U[0][j] >= C_.rhoCut[m] || (U[1][j] == 0.0 && U[2][j] == 0.0 && U[3][j] == 0.0)) continue;
       const double vol = weight / W_.invVol[j];
       B_.floors[1] -= U[1][j] * vol;
       B_.floors[2] -= U[2][j] * vol;

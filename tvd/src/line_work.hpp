@@ -37,13 +37,13 @@ struct LineWork {
   int capacity;
   // U^n (overwritten with U^{n+1}), the stage state, and the stage result.
   std::array<std::vector<double>, 4> u0, u1, w;
-  std::vector<CellState> cs;     // primitive state the fluxes are built from
-  std::vector<double> sqrtRho;   // sqrt(rho) per cell, for the Roe weights
-  std::vector<std::array<double, 4>> F;  // physical flux per cell
-  std::vector<FaceEigen> fe;     // face f lies between cells f and f+1
-  std::vector<std::array<double, kFields>> g;  // limited jumps per cell
+  std::vector<CellState> cs;                        // primitive state the fluxes are built from
+  std::vector<double> sqrtRho;                      // sqrt(rho) per cell, for the Roe weights
+  std::vector<std::array<double, 4>> F;             // physical flux per cell
+  std::vector<FaceEigen> fe;                        // face f lies between cells f and f+1
+  std::vector<std::array<double, kFields>> g;       // limited jumps per cell
   std::vector<std::array<double, 4>> fluxL, fluxR;  // flux seen by the left / right cell
-  std::vector<unsigned char> fallback;  // face recomputed with the Rusanov flux
+  std::vector<unsigned char> fallback;              // face recomputed with the Rusanov flux
   // Markers: owner object and material per cell, interface normal per cell (line coords).
   std::vector<int> owner, mat;
   std::vector<double> nn, nt;

@@ -28,8 +28,7 @@ Snapshot TvdSolver::snapshot() const {
     if (!markersOn_ && id != singleMaterial_) continue;
     std::visit(
         [&](const auto& eos) {
-#pragma omp parallel for schedule(static) \
-    num_threads(threads_) if (grid_.cells() >= kParallelCells)
+#pragma omp parallel for schedule(static) num_threads(threads_) if (grid_.cells() >= kParallelCells)
           for (long c = 0; c < cells; ++c) {
             const auto cc = static_cast<std::size_t>(c);
             int object = 0;
@@ -55,8 +54,8 @@ Snapshot TvdSolver::snapshot() const {
         },
         materials_[static_cast<std::size_t>(id)].eos);
   }
-  s.fields = {std::move(rho), std::move(p), std::move(v), std::move(e), std::move(mat),
-              std::move(obj)};
+  s.fields = {std::move(rho), std::move(p),   std::move(v),
+              std::move(e),   std::move(mat), std::move(obj)};
   for (const auto& m : materials_) s.materialNames.push_back(m.name);
   if (markersOn_) {
     s.objectNames = bodyNames_;

@@ -52,19 +52,19 @@ void TvdSolver::setUpGrid(const cases::Scene& scene) {
         "tvd.cfl = {}: must be in (0, 0.5] (the positivity fallback flux needs CFL <= 1/2)",
         p.cfl));
   if (!(p.vacuumDensity > 0.0) || p.vacuumDensity >= 1.0)
-    throw InputError(fmt::format(
-        "tvd.vacuum_density = {}: must be a fraction of rho0 in (0, 1)", p.vacuumDensity));
+    throw InputError(fmt::format("tvd.vacuum_density = {}: must be a fraction of rho0 in (0, 1)",
+                                 p.vacuumDensity));
   if (!(options_.entropyFix >= 0.0) || options_.contactIterations < 0)
     throw InputError("tvd options: entropyFix must be >= 0 and contactIterations >= 0");
   const double lx = d.xmax - d.xmin, lz = d.zmax - d.zmin;
   if (!(lx >= p.cellSize) || !(lz >= p.cellSize))
     throw InputError(fmt::format(
-        "domain [{}, {}] x [{}, {}] cm is smaller than one cell of tvd.cell_size = {} cm",
-        d.xmin, d.xmax, d.zmin, d.zmax, p.cellSize));
+        "domain [{}, {}] x [{}, {}] cm is smaller than one cell of tvd.cell_size = {} cm", d.xmin,
+        d.xmax, d.zmin, d.zmax, p.cellSize));
   const double nxD = std::round(lx / p.cellSize), nzD = std::round(lz / p.cellSize);
   if (nxD * nzD > 4.0e8)
-    throw InputError(fmt::format("tvd grid of {} x {} cells is too large (at most 4e8 cells)",
-                                 nxD, nzD));
+    throw InputError(
+        fmt::format("tvd grid of {} x {} cells is too large (at most 4e8 cells)", nxD, nzD));
   if (geometry_ == Geometry::Axisymmetric) {
     if (d.xmin < 0.0)
       throw InputError(fmt::format("r-z domain: xmin = {} cm, the radius must be >= 0", d.xmin));
@@ -93,8 +93,8 @@ void TvdSolver::setUpMaterials(const cases::Scene& scene) {
     bodyNames_.push_back(b.name);
     objectMaterial_.push_back(b.material);
     const double rho0 = materials_[static_cast<std::size_t>(b.material)].rho0();
-    bodyStates_.push_back({b.density > 0.0 ? b.density : rho0, b.velocity.x, b.velocity.z,
-                           b.specificEnergy});
+    bodyStates_.push_back(
+        {b.density > 0.0 ? b.density : rho0, b.velocity.x, b.velocity.z, b.specificEnergy});
   }
   for (const auto& m : materials_) {
     rhoCut_.push_back(params_.vacuumDensity * m.rho0());
@@ -129,8 +129,7 @@ double TvdSolver::signalSpeedPass(bool keepVelocity, long* worstCell) const {
     if (!markersOn_ && id != singleMaterial_) continue;
     std::visit(
         [&](const auto& eos) {
-#pragma omp parallel \
-    num_threads(threads_) if (grid_.cells() >= kParallelCells)
+#pragma omp parallel num_threads(threads_) if (grid_.cells() >= kParallelCells)
           {
             double sLocal = 0.0;
             long wLocal = -1, bLocal = -1;

@@ -47,9 +47,8 @@ namespace {
 
 using detail::FaceKind;
 using detail::Side;
-using LineFn = bool (*)(detail::LineWork&, const detail::LineSetup&,
-                        const detail::SweepContext&, detail::LineBudget&,
-                        detail::LineFailure&);
+using LineFn = bool (*)(detail::LineWork&, const detail::LineSetup&, const detail::SweepContext&,
+                        detail::LineBudget&, detail::LineFailure&);
 
 template <class Lim, bool Radial, bool Markers>
 bool runLine(detail::LineWork& w, const detail::LineSetup& s, const detail::SweepContext& c,
@@ -67,9 +66,12 @@ LineFn pickFor(bool radial, bool markers) {
 // kernel, chosen here once per sweep: an effect the scene does not name costs no branch.
 LineFn pickLineFunction(cases::Limiter limiter, bool radial, bool markers) {
   switch (limiter) {
-    case cases::Limiter::Minmod: return pickFor<Minmod>(radial, markers);
-    case cases::Limiter::VanLeer: return pickFor<VanLeer>(radial, markers);
-    case cases::Limiter::Superbee: return pickFor<Superbee>(radial, markers);
+    case cases::Limiter::Minmod:
+      return pickFor<Minmod>(radial, markers);
+    case cases::Limiter::VanLeer:
+      return pickFor<VanLeer>(radial, markers);
+    case cases::Limiter::Superbee:
+      return pickFor<Superbee>(radial, markers);
   }
   return pickFor<Minmod>(radial, markers);
 }
@@ -117,8 +119,7 @@ void TvdSolver::sweep(int direction, double dt) {
                        xdir ? U_.mz.data() : U_.mx.data(), U_.E.data()};
   const int* own = markersOn_ ? owner_.data() : nullptr;
 
-#pragma omp parallel \
-    num_threads(threads_) if (grid_.cells() >= kParallelCells)
+#pragma omp parallel num_threads(threads_) if (grid_.cells() >= kParallelCells)
   {
 #ifdef _OPENMP
     Workspace& ws = *work_[static_cast<std::size_t>(omp_get_thread_num())];
@@ -205,8 +206,8 @@ void TvdSolver::sweep(int direction, double dt) {
         ws.message = fmt::format(
             "tvd: step {} ({} sweep, dt = {:.4g} us): cell (i={}, k={}) at x = {:.6g}, z = {:.6g} "
             "cm: {} (rho = {:.6g} g/cm^3, e = {:.6g} cm^2/us^2)",
-            step_, xdir ? "x" : "z", dt, i, k, grid_.x0 + (i + 0.5) * h,
-            grid_.z0 + (k + 0.5) * h, fail.what, fail.rho, fail.e);
+            step_, xdir ? "x" : "z", dt, i, k, grid_.x0 + (i + 0.5) * h, grid_.z0 + (k + 0.5) * h,
+            fail.what, fail.rho, fail.e);
         continue;
       }
       for (int j = 2; j <= n + 1; ++j) {

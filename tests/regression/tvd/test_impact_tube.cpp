@@ -17,9 +17,9 @@ constexpr double kSpeed = 0.67;
 constexpr double kTime = 0.3;
 
 struct TubeResult {
-  double l1 = 0.0;         // integral |rho - rho_exact| dx
-  double rhoStar = 0.0;    // mean density of the right plateau
-  double pStar = 0.0;      // mean pressure of the right plateau
+  double l1 = 0.0;       // integral |rho - rho_exact| dx
+  double rhoStar = 0.0;  // mean density of the right plateau
+  double pStar = 0.0;    // mean pressure of the right plateau
   double rhoStarL = 0.0, pStarL = 0.0;
 };
 

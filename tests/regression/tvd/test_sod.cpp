@@ -76,8 +76,7 @@ double sodDiagonal(int n) {
 // falls by a ratio between 0.5 and 0.63; 0.6 demands the second-order behaviour.
 TEST(TvdSod, AlongX) {
   const double e128 = sodAlongAxis(128, false), e256 = sodAlongAxis(256, false);
-  std::printf("Sod along x: L1(128) = %.5f, L1(256) = %.5f, ratio %.3f\n", e128, e256,
-              e256 / e128);
+  std::printf("Sod along x: L1(128) = %.5f, L1(256) = %.5f, ratio %.3f\n", e128, e256, e256 / e128);
   EXPECT_LT(e128, 0.011);
   EXPECT_LE(e256 / e128, 0.6);
 }
@@ -85,8 +84,7 @@ TEST(TvdSod, AlongX) {
 // The z sweep must give the same numbers as the x sweep (same kernel, other stride).
 TEST(TvdSod, AlongZ) {
   const double e128 = sodAlongAxis(128, true), e256 = sodAlongAxis(256, true);
-  std::printf("Sod along z: L1(128) = %.5f, L1(256) = %.5f, ratio %.3f\n", e128, e256,
-              e256 / e128);
+  std::printf("Sod along z: L1(128) = %.5f, L1(256) = %.5f, ratio %.3f\n", e128, e256, e256 / e128);
   EXPECT_LT(e128, 0.011);
   EXPECT_LE(e256 / e128, 0.6);
   EXPECT_NEAR(e128, sodAlongAxis(128, false), 1e-12);

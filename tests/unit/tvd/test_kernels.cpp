@@ -168,7 +168,10 @@ TEST(TvdKernels, HartenYeeFluxIsMirrorSymmetricBitwise) {
   for (int trial = 0; trial < 500; ++trial) {
     const CellState L = stateOf(al, 2.0 + U(rng), U(rng) - 0.5, U(rng) - 0.5, 0.2 * U(rng));
     const CellState R = stateOf(al, 2.0 + U(rng), U(rng) - 0.5, U(rng) - 0.5, 0.2 * U(rng));
-    auto mirror = [](CellState s) { s.u = -s.u; return s; };
+    auto mirror = [](CellState s) {
+      s.u = -s.u;
+      return s;
+    };
     const CellState Lm = mirror(R), Rm = mirror(L);
     const U4 a = conserved(L), b = conserved(R), am = conserved(Lm), bm = conserved(Rm);
     const double dU[4] = {b[0] - a[0], b[1] - a[1], b[2] - a[2], b[3] - a[3]};
@@ -206,7 +209,8 @@ TEST(TvdKernels, LimitersAreSymmetricOddAndInTheTvdRegion) {
     for (auto g : {&Minmod::g, &VanLeer::g, &Superbee::g}) {
       EXPECT_EQ(g(a, b), g(b, a));
       EXPECT_EQ(g(-a, -b), -g(a, b));
-      if (a * b <= 0.0) EXPECT_EQ(g(a, b), 0.0);
+      if (a * b <= 0.0)
+        EXPECT_EQ(g(a, b), 0.0);
       else {
         // Sweby's region: 0 <= g/b <= min(2, 2 a/b) in ratio form, and g between the jumps
         // for minmod.

@@ -29,9 +29,6 @@ struct ParticleSystem {
             double ph, double prhoRef, int pmaterial, int pobject, std::int64_t pid);
   //! Removes the particles whose `keep` flag is 0, preserving the order of the rest.
   void compact(const std::vector<unsigned char>& keep);
-  //! Reorders every array: new index k holds old particle perm[k].
-  void permute(const std::vector<int>& perm, std::vector<double>& scratchD,
-               std::vector<std::int64_t>& scratchI);
 };
 
 }  // namespace hvi::sph

@@ -33,15 +33,15 @@ namespace hvi::tvd {
 
 //! Primitive state of one cell in line coordinates, with the EOS response.
 struct CellState {
-  double rho = 0.0;  //!< g/cm^3
-  double u = 0.0;    //!< normal velocity, cm/us
-  double w = 0.0;    //!< tangential velocity, cm/us
-  double e = 0.0;    //!< specific internal energy, cm^2/us^2
-  double p = 0.0;    //!< Mbar
-  double c = 0.0;    //!< sound speed from the EOS (floored there), cm/us
-  double gam = 0.0;  //!< Gamma = (dP/de)_rho / rho
-  double prho = 0.0; //!< (dP/drho)_e, cm^2/us^2
-  double H = 0.0;    //!< total specific enthalpy (E + P) / rho
+  double rho = 0.0;   //!< g/cm^3
+  double u = 0.0;     //!< normal velocity, cm/us
+  double w = 0.0;     //!< tangential velocity, cm/us
+  double e = 0.0;     //!< specific internal energy, cm^2/us^2
+  double p = 0.0;     //!< Mbar
+  double c = 0.0;     //!< sound speed from the EOS (floored there), cm/us
+  double gam = 0.0;   //!< Gamma = (dP/de)_rho / rho
+  double prho = 0.0;  //!< (dP/drho)_e, cm^2/us^2
+  double H = 0.0;     //!< total specific enthalpy (E + P) / rho
 };
 
 inline constexpr int kFields = 5;
@@ -49,7 +49,7 @@ inline constexpr int kFields = 5;
 //! Averaged state at a face and the characteristic variables of the jump across it.
 struct FaceEigen {
   double u = 0.0, w = 0.0, H = 0.0, c = 0.0;
-  double q2h = 0.0;  //!< |v|^2 / 2 of the averaged velocity
+  double q2h = 0.0;                                   //!< |v|^2 / 2 of the averaged velocity
   double alpha[kFields] = {0.0, 0.0, 0.0, 0.0, 0.0};  //!< alpha1, alpha2, alpha3, alpha4, alpha5
 };
 
@@ -66,8 +66,8 @@ inline constexpr double kRelativeSoundFloor2 = 1e-8;
 //! Roe-weighted (sqrt(rho)) averages of u, w, H, e, Gamma and P_rho; c^2 = P_rho + Gamma P/rho
 //! of the average, never below the smaller of the two cells' (floored) c^2. dU = U_R - U_L;
 //! sL, sR = sqrt(rho_L), sqrt(rho_R) (computed once per cell by the sweep).
-inline FaceEigen faceEigen(const CellState& L, const CellState& R, const double dU[4],
-                           double sL, double sR) {
+inline FaceEigen faceEigen(const CellState& L, const CellState& R, const double dU[4], double sL,
+                           double sR) {
   const double inv = 1.0 / (sL + sR);
   const double wL = sL * inv, wR = sR * inv;  // computed alike so that L <-> R is exact
   FaceEigen f;
@@ -78,7 +78,7 @@ inline FaceEigen faceEigen(const CellState& L, const CellState& R, const double 
   const double gam = wL * L.gam + wR * R.gam;
   const double prho = wL * L.prho + wR * R.prho;
   f.q2h = 0.5 * (f.u * f.u + f.w * f.w);
-  const double h = f.H - f.q2h;                 // specific enthalpy of the average
+  const double h = f.H - f.q2h;  // specific enthalpy of the average
   const double pOverRho = std::max(h - e, 0.0);
   double c2 = prho + gam * pOverRho;
   c2 = std::max(c2, std::min(L.c * L.c, R.c * R.c));

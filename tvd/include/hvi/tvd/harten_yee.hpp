@@ -23,9 +23,8 @@ inline double entropyFixedAbs(double z, double delta) {
 //! right of it. psi has Harten's entropy fix (half-width `delta`) on the two acoustic fields
 //! only: the linearly degenerate fields use |a| so that a contact at rest stays exactly at rest
 //! (a free body in vacuum does not leak mass). With g = 0 this is Roe's first-order flux.
-inline void hartenYeeFlux(const FaceEigen& f, const double gL[kFields],
-                          const double gR[kFields], const double FL[4], const double FR[4],
-                          double delta, double out[4]) {
+inline void hartenYeeFlux(const FaceEigen& f, const double gL[kFields], const double gR[kFields],
+                          const double FL[4], const double FR[4], double delta, double out[4]) {
   const double a[kFields] = {f.u - f.c, f.u, f.u, f.u + f.c, f.u};
   double phi[kFields];
   for (int l = 0; l < kFields; ++l) {

@@ -27,7 +27,10 @@ struct Conserved {
 struct Budget {
   double mass = 0.0, momentumX = 0.0, momentumZ = 0.0, energy = 0.0;
   Budget& operator+=(const Budget& o) {
-    mass += o.mass; momentumX += o.momentumX; momentumZ += o.momentumZ; energy += o.energy;
+    mass += o.mass;
+    momentumX += o.momentumX;
+    momentumZ += o.momentumZ;
+    energy += o.energy;
     return *this;
   }
 };
@@ -41,16 +44,18 @@ struct Ledger {
   Budget floors;        //!< velocity reset below the vacuum density, internal-energy floor
   [[nodiscard]] Budget sum() const {
     Budget s = boundary;
-    s += interfaces; s += ownerChanges; s += floors;
+    s += interfaces;
+    s += ownerChanges;
+    s += floors;
     return s;
   }
 };
 
 //! Settings the scene does not carry (defaults are those documented in docs/tvd.md).
 struct Options {
-  double entropyFix = 0.1;      //!< Harten's delta as a fraction of |u| + c at the face
-  int contactIterations = 2;    //!< two-shock impedance updates at object/object faces
-  int threads = 0;              //!< OpenMP threads for the sweeps; 0: omp_get_max_threads()
+  double entropyFix = 0.1;    //!< Harten's delta as a fraction of |u| + c at the face
+  int contactIterations = 2;  //!< two-shock impedance updates at object/object faces
+  int threads = 0;            //!< OpenMP threads for the sweeps; 0: omp_get_max_threads()
 };
 
 //! Eulerian TVD solver (the scheme is specified in docs/tvd.md):
@@ -124,12 +129,12 @@ class TvdSolver final : public Solver {
     double rho, vx, vz, e;
   };
   std::vector<BodyState> bodyStates_;  // initial state of each body (object)
-  std::vector<double> rhoCut_;     // per material: below this density a cell is vacuum
+  std::vector<double> rhoCut_;         // per material: below this density a cell is vacuum
   // Per material: below kThinFraction * rho0 a cell is nearly empty; if the positivity fallback
   // cannot keep it physical it is reset to vacuum (booked in the ledger) instead of aborting.
   static constexpr double kThinFraction = 1e-3;
   std::vector<double> rhoThin_;
-  int singleMaterial_ = 0;         // the material of a run without markers
+  int singleMaterial_ = 0;  // the material of a run without markers
 
   Conserved U_;
   double time_ = 0.0;
