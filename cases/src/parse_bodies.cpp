@@ -171,9 +171,26 @@ void parseBodies(const TableReader& root, Scene& scene, Sources& sources) {
               "a name unique among the bodies");
     body.material = static_cast<int>(materialIndex(b, scene));
     body.shape = readShape(b, shape);
+    if (b.has("velocity") && b.has("radial_velocity"))
+      b.fail("radial_velocity", "give either velocity or radial_velocity, not both",
+             "velocity = [vx, vz] (uniform) or radial_velocity = speed (radial field)");
     if (b.has("velocity"))
       body.velocity =
           readVec2(b.ctx(), b.require("velocity"), b.keyPath("velocity"), Dimension::Velocity);
+    if (b.has("radial_velocity")) {
+      body.radial = true;
+      body.radialSpeed = b.quantity("radial_velocity", Dimension::Velocity);
+      if (b.has("radial_centre")) {
+        b.check(scene.geometry == Geometry::Planar, "radial_centre",
+                "in rz geometry the radial field is about the axis; it has no centre",
+                "no radial_centre in rz geometry");
+        body.radialCentre = readVec2(b.ctx(), b.require("radial_centre"),
+                                     b.keyPath("radial_centre"), Dimension::Length);
+      }
+    } else if (b.has("radial_centre")) {
+      b.fail("radial_centre", "radial_centre needs radial_velocity",
+             "radial_velocity = speed with radial_centre = [x, z]");
+    }
     const eos::Eos& eos = scene.materials[static_cast<std::size_t>(body.material)].eos;
     body.density = b.quantity("density", Dimension::Density, eos::referenceDensity(eos));
     b.check(body.density > 0.0, "density", "must be > 0", "a density > 0");

@@ -97,7 +97,13 @@ std::string toToml(const Scene& s) {
     const bool known = b.material >= 0 && static_cast<std::size_t>(b.material) < s.materials.size();
     o << tomlString(known ? s.materials[static_cast<std::size_t>(b.material)].name : "") << "\n";
     std::visit(ShapeWriter{o}, b.shape);
-    o << "velocity = " << vec(b.velocity) << "\ndensity = " << num(b.density)
+    if (b.radial) {
+      o << "radial_velocity = " << num(b.radialSpeed) << "\n";
+      if (s.geometry == Geometry::Planar) o << "radial_centre = " << vec(b.radialCentre) << "\n";
+    } else {
+      o << "velocity = " << vec(b.velocity) << "\n";
+    }
+    o << "density = " << num(b.density)
       << "\nspecific_energy = " << num(b.specificEnergy) << "\n";
   }
 

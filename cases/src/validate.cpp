@@ -34,10 +34,10 @@ void checkAxisymmetric(const TableReader& b, const Body& body, double tol) {
     for (const Vec2 v : p->vertices)
       b.check(v.x >= -tol, "vertices", "in rz geometry x is the radius and must be >= 0",
               "vertices with x >= 0");
-  if (boundingBox(body.shape).xmin <= tol)
+  if (boundingBox(body.shape).xmin <= tol && !body.radial)
     b.check(body.velocity.x == 0.0, "velocity",
             "a body on the axis cannot move radially in rz geometry",
-            "velocity = [\"0 km/s\", vz]");
+            "velocity = [\"0 km/s\", vz], or radial_velocity for flow onto the axis");
 }
 
 void checkResolution(const TableReader& root, const Scene& scene, const Sources& src) {
@@ -75,6 +75,10 @@ void checkRiemann(const TableReader& root, const Scene& scene, const Sources& sr
     if (!std::holds_alternative<Rect>(scene.bodies[i].shape))
       fail(root.ctx(), src.bodies[i], "bodies[" + std::to_string(i) + "].shape",
            "the Riemann solver needs rect bodies", need);
+  for (std::size_t i = 0; i < 2; ++i)
+    if (scene.bodies[i].radial)
+      fail(root.ctx(), src.bodies[i], "bodies[" + std::to_string(i) + "].radial_velocity",
+           "the Riemann solver needs uniform states", "velocity = [vx, 0]");
   const Rect& a = std::get<Rect>(scene.bodies[0].shape);
   const Rect& b = std::get<Rect>(scene.bodies[1].shape);
   const Rect& left = a.xmin <= b.xmin ? a : b;

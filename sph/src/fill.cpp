@@ -75,7 +75,8 @@ ParticleSystem fillBodies(const cases::Scene& scene) {
           claimed = cases::contains(scene.bodies[o].shape, pt);
         if (claimed) continue;
         const double m = rhoRef * cellArea * (rz ? 2.0 * std::numbers::pi * x : 1.0);
-        ps.push(x, z, body.velocity.x, body.velocity.z, rhoRef, body.specificEnergy, m, h, rhoRef,
+        const Vec2 v = cases::initialVelocity(body, scene.geometry, pt);
+        ps.push(x, z, v.x, v.z, rhoRef, body.specificEnergy, m, h, rhoRef,
                 body.material, static_cast<int>(b), nextId++);
         ++filled;
       }

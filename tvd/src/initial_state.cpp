@@ -38,8 +38,20 @@ void TvdSolver::initialiseState(const cases::Scene& scene) {
     vzOld_.assign(n, 0.0);
     vxMid_.assign(n, 0.0);
     vzMid_.assign(n, 0.0);
-    for (std::size_t c = 0; c < n; ++c)
-      if (owner_[c] >= 0) put(c, bodyStates_[static_cast<std::size_t>(owner_[c])], 1.0);
+    for (std::size_t c = 0; c < n; ++c) {
+      if (owner_[c] < 0) continue;
+      const auto o = static_cast<std::size_t>(owner_[c]);
+      BodyState st = bodyStates_[o];
+      if (scene.bodies[o].radial) {  // a radial field is sampled at the cell centre
+        const long i = static_cast<long>(c) % grid_.nx, k = static_cast<long>(c) / grid_.nx;
+        const Vec2 v = cases::initialVelocity(
+            scene.bodies[o], geometry_,
+            {grid_.x0 + (i + 0.5) * grid_.dx, grid_.z0 + (k + 0.5) * grid_.dz});
+        st.vx = v.x;
+        st.vz = v.z;
+      }
+      put(c, st, 1.0);
+    }
     return;
   }
 
@@ -51,11 +63,16 @@ void TvdSolver::initialiseState(const cases::Scene& scene) {
   {
     // Weights are summed per body and the states combined in body order, so the result does
     // not depend on the order of the samples: mirror-image cells get bitwise mirrored states.
-    std::vector<double> weight(nb + 1);
+    // A radial field is averaged over the samples: momentum sum(w v) per body, and the kinetic
+    // energy of that mean velocity (the spread of directions in a cell at the centre must not
+    // become heat in a cold stream). A uniform body needs neither.
+    std::vector<double> weight(nb + 1), wvx(nb + 1), wvz(nb + 1);
 #pragma omp for schedule(static)
     for (long c = 0; c < cells; ++c) {
       const int i = static_cast<int>(c % grid_.nx), k = static_cast<int>(c / grid_.nx);
       std::fill(weight.begin(), weight.end(), 0.0);
+      std::fill(wvx.begin(), wvx.end(), 0.0);
+      std::fill(wvz.begin(), wvz.end(), 0.0);
       for (int a = 0; a < S; ++a) {
         for (int b = 0; b < S; ++b) {
           const Vec2 p{grid_.x0 + (i + (a + 0.5) / S) * grid_.dx,
@@ -66,14 +83,31 @@ void TvdSolver::initialiseState(const cases::Scene& scene) {
               owner = bi;
               break;
             }
-          weight[owner] += rz ? p.x : 1.0;  // r-z: volume weight r
+          const double w = rz ? p.x : 1.0;  // r-z: volume weight r
+          weight[owner] += w;
+          if (owner < nb && scene.bodies[owner].radial) {
+            const Vec2 v = cases::initialVelocity(scene.bodies[owner], geometry_, p);
+            wvx[owner] += w * v.x;
+            wvz[owner] += w * v.z;
+          }
         }
       }
       double wsum = 0.0;
       for (double w : weight) wsum += w;
       const auto cc = static_cast<std::size_t>(c);
-      for (std::size_t bi = 0; bi <= nb; ++bi)
-        if (weight[bi] > 0.0) put(cc, bi < nb ? bodyStates_[bi] : vacuum, weight[bi] / wsum);
+      for (std::size_t bi = 0; bi <= nb; ++bi) {
+        if (!(weight[bi] > 0.0)) continue;
+        if (bi < nb && scene.bodies[bi].radial) {
+          const BodyState& b = bodyStates_[bi];
+          U_.rho[cc] += b.rho * weight[bi] / wsum;
+          U_.mx[cc] += b.rho * wvx[bi] / wsum;
+          U_.mz[cc] += b.rho * wvz[bi] / wsum;
+          const double vx = wvx[bi] / weight[bi], vz = wvz[bi] / weight[bi];
+          U_.E[cc] += b.rho * (b.e + 0.5 * (vx * vx + vz * vz)) * weight[bi] / wsum;
+        } else {
+          put(cc, bi < nb ? bodyStates_[bi] : vacuum, weight[bi] / wsum);
+        }
+      }
     }
   }
 }

@@ -38,8 +38,9 @@ inline constexpr std::array<std::string_view, 17> kMaterialKeys{
     "gamma0"};
 
 // Bodies: common keys, then the keys of each shape.
-inline constexpr std::array<std::string_view, 7> kBodyCommonKeys{
-    "name", "material", "shape", "velocity", "density", "pressure", "specific_energy"};
+inline constexpr std::array<std::string_view, 9> kBodyCommonKeys{
+    "name",     "material",        "shape",           "velocity",     "density",
+    "pressure", "specific_energy", "radial_velocity", "radial_centre"};
 inline constexpr std::array<std::string_view, 3> kShapeNames{"disk", "rect", "polygon"};
 inline constexpr std::array<std::string_view, 2> kDiskKeys{"centre", "radius"};
 inline constexpr std::array<std::string_view, 2> kRectKeys{"x", "z"};

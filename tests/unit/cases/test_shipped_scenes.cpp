@@ -93,6 +93,9 @@ void expectSameScene(const Scene& a, const Scene& b) {
     ASSERT_EQ(x.shape.index(), y.shape.index());
     std::visit(SameShape{y.shape}, x.shape);
     EXPECT_EQ(x.velocity, y.velocity);
+    EXPECT_EQ(x.radial, y.radial);
+    EXPECT_EQ(x.radialSpeed, y.radialSpeed);
+    EXPECT_EQ(x.radialCentre, y.radialCentre);
     EXPECT_EQ(x.density, y.density);
     EXPECT_EQ(x.specificEnergy, y.specificEnergy);
   }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "hvi/cases/load.hpp"
 #include "hvi/common/error.hpp"
@@ -120,6 +121,58 @@ TEST(SceneValidation, AxisymmetricRules) {
   EXPECT_TRUE(accepted(rzScene(ring)));
   // The default r-z boundary at xmin is the axis.
   EXPECT_EQ(parseScene(rzScene(ring), "v.toml").domain.boundary[0], Boundary::Axis);
+}
+
+// A radial velocity field (the Noh problems): about a point in x-z, about the axis in r-z, where
+// it is the one way a body touching the axis may move radially.
+TEST(SceneValidation, RadialVelocityField) {
+  const std::string stream = disk("gas", "0 cm", "1 cm", "0.5 cm");
+  const std::string planar = plateScene(stream + "radial_velocity = \"-10 km/s\"\n"
+                                                 "radial_centre = [\"0 cm\", \"0.5 cm\"]\n");
+  const Scene s = parseScene(planar, "v.toml");
+  auto named = [](const Scene& sc, const std::string& n) -> const Body& {
+    for (const Body& x : sc.bodies)
+      if (x.name == n) return x;
+    throw std::runtime_error("no body " + n);
+  };
+  const Body& b = named(s, "gas");
+  ASSERT_TRUE(b.radial);
+  EXPECT_DOUBLE_EQ(b.radialSpeed, -1.0);  // 10 km/s = 1 cm/us
+  // At (0.3, 0.9), 0.5 from the centre along (0.6, 0.8): v = -1 * (0.6, 0.8).
+  const Vec2 v = initialVelocity(b, Geometry::Planar, {0.3, 0.9});
+  EXPECT_NEAR(v.x, -0.6, 1e-15);
+  EXPECT_NEAR(v.z, -0.8, 1e-15);
+  EXPECT_EQ(initialVelocity(b, Geometry::Planar, {0.0, 0.5}), Vec2{});  // at the centre
+  // Round trip through the resolved scene keeps the field.
+  const Scene back = parseScene(toToml(s), "r.toml");
+  EXPECT_TRUE(named(back, "gas").radial);
+  EXPECT_EQ(named(back, "gas").radialCentre, b.radialCentre);
+  // Not both kinds of velocity; no centre without a speed.
+  EXPECT_NE(errorOf(plateScene(stream + "radial_velocity = \"-1 km/s\"\n"
+                                        "velocity = [\"0 km/s\", \"1 km/s\"]\n"))
+                .find("either velocity or radial_velocity"),
+            std::string::npos);
+  EXPECT_NE(errorOf(plateScene(stream + "radial_centre = [\"0 cm\", \"0 cm\"]\n"))
+                .find("needs radial_velocity"),
+            std::string::npos);
+  // r-z: a body on the axis streams onto it; v = (speed, 0) off the axis, 0 on it; no centre.
+  const std::string rz = "geometry = \"rz\"";
+  auto rzScene = [&](const std::string& bodies) {
+    std::string t = plateScene(bodies, rz);
+    const std::string planarX = "x = [\"-3 cm\", \"3 cm\"]";
+    for (int i = 0; i < 2; ++i)
+      t.replace(t.find(planarX), planarX.size(), "x = [\"0 cm\", \"3 cm\"]");
+    return t;
+  };
+  const std::string onAxis = disk("ball", "0 cm", "0.5 cm", "0.5 cm");
+  const Scene r = parseScene(rzScene(onAxis + "radial_velocity = \"-5 km/s\"\n"), "v.toml");
+  EXPECT_EQ(initialVelocity(named(r, "ball"), Geometry::Axisymmetric, {0.2, 0.7}),
+            (Vec2{-0.5, 0.0}));
+  EXPECT_EQ(initialVelocity(named(r, "ball"), Geometry::Axisymmetric, {0.0, 0.7}), Vec2{});
+  EXPECT_NE(errorOf(rzScene(onAxis + "radial_velocity = \"-5 km/s\"\n"
+                                     "radial_centre = [\"0 cm\", \"0 cm\"]\n"))
+                .find("about the axis"),
+            std::string::npos);
 }
 
 TEST(SceneValidation, InitialEnergyFromPressureSolvesTheEos) {

@@ -80,5 +80,36 @@ TEST(Fill, EmptyBodyIsAnInputError) {
   EXPECT_THROW(fillBodies(s), InputError);
 }
 
+// A radial field (the Noh problems): every particle moves at the stream speed straight at the
+// centre (planar) or at the axis (r-z), to round-off.
+TEST(Fill, RadialVelocityField) {
+  auto s = test::baseScene(Geometry::Planar, -1.0, 1.0, -1.0, 1.0, 0.05, {});
+  s.materials = {test::idealGas(5.0 / 3.0)};
+  s.bodies = {test::diskBody("gas", 0, {0.2, 0.1}, 0.5)};
+  s.bodies[0].radial = true;
+  s.bodies[0].radialSpeed = -1.0;
+  s.bodies[0].radialCentre = {0.2, 0.1};
+  test::resolveDensities(s);
+  ParticleSystem ps = fillBodies(s);
+  ASSERT_GT(ps.size(), 100u);
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    const double dx = ps.x[i] - 0.2, dz = ps.z[i] - 0.1;
+    EXPECT_NEAR(std::hypot(ps.vx[i], ps.vz[i]), 1.0, 1e-15);
+    EXPECT_NEAR(ps.vx[i] * dz - ps.vz[i] * dx, 0.0, 1e-15);  // parallel to the radius
+    EXPECT_LT(ps.vx[i] * dx + ps.vz[i] * dz, 0.0);          // inward
+  }
+  s = test::baseScene(Geometry::Axisymmetric, 0.0, 1.0, 0.0, 0.2, 0.05, {});
+  s.materials = {test::idealGas(5.0 / 3.0)};
+  s.bodies = {test::rectBody("gas", 0, 0.0, 1.0, 0.0, 0.2)};
+  s.bodies[0].radial = true;
+  s.bodies[0].radialSpeed = -1.0;
+  test::resolveDensities(s);
+  ps = fillBodies(s);
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    EXPECT_EQ(ps.vx[i], -1.0);
+    EXPECT_EQ(ps.vz[i], 0.0);
+  }
+}
+
 }  // namespace
 }  // namespace hvi::sph

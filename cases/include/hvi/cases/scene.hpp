@@ -1,6 +1,7 @@
 //! @file A scene, parsed once from its file into typed structs; solvers never see the parser.
 #pragma once
 #include <array>
+#include <cmath>
 #include <optional>
 #include <set>
 #include <string>
@@ -42,15 +43,32 @@ double area(const Shape& s);  //!< planar area of the section, cm^2
 struct Box { double xmin, xmax, zmin, zmax; };
 Box boundingBox(const Shape& s);
 
-//! A body: a region of one material with a uniform initial state.
+//! A body: a region of one material with a uniform initial state, except that its velocity may
+//! be a radial field (the Noh problems: gas streaming onto an axis or a point).
 struct Body {
   std::string name;
   int material = -1;        //!< index into Scene::materials
   Shape shape;
-  Vec2 velocity;            //!< cm/us
+  Vec2 velocity;            //!< cm/us (uniform; unused when `radial` is set)
   double density = 0.0;     //!< g/cm^3 (defaults to the material's rho0)
   double specificEnergy = 0.0;  //!< cm^2/us^2 (from `pressure` if the file gives that)
+  //! Radial velocity field v = radialSpeed * (p - radialCentre) / |p - radialCentre| (planar:
+  //! about a point, i.e. cylindrical flow in x-z) or v = (radialSpeed, 0) (r-z: about the axis,
+  //! cylindrical flow). Negative speeds converge. Zero where p is the centre (or on the axis).
+  bool radial = false;
+  double radialSpeed = 0.0;  //!< cm/us
+  Vec2 radialCentre;         //!< cm, planar only
 };
+
+//! The initial velocity of `body` at point p (cm/us).
+inline Vec2 initialVelocity(const Body& body, Geometry g, Vec2 p) {
+  if (!body.radial) return body.velocity;
+  if (g == Geometry::Axisymmetric) return {p.x > 0.0 ? body.radialSpeed : 0.0, 0.0};
+  const Vec2 d{p.x - body.radialCentre.x, p.z - body.radialCentre.z};
+  const double r = std::hypot(d.x, d.z);
+  if (!(r > 0.0)) return {};
+  return {body.radialSpeed * d.x / r, body.radialSpeed * d.z / r};
+}
 
 enum class Boundary { Outflow, Wall, Axis };
 //! Domain of the simulation, cm. Boundaries are indexed xmin, xmax, zmin, zmax.
