@@ -45,7 +45,9 @@ void parseTvd(const TableReader& s, TvdParams& p) {
   p.limiter = static_cast<Limiter>(
       s.choice("limiter", limiterNames(), static_cast<std::size_t>(p.limiter)));
   p.cfl = s.number("cfl", p.cfl);
-  s.check(p.cfl > 0.0 && p.cfl <= 1.0, "cfl", "must be in (0, 1]", "0 < cfl <= 1");
+  // The positivity fallback (Rusanov) flux of the split sweeps needs CFL <= 1/2.
+  s.check(p.cfl > 0.0 && p.cfl <= 0.5, "cfl", "must be in (0, 0.5] for the TVD scheme",
+          "0 < cfl <= 0.5");
   p.markerSpacing = s.number("marker_spacing", p.markerSpacing);
   s.check(p.markerSpacing > 0.0 && p.markerSpacing <= 10.0, "marker_spacing",
           "must be in (0, 10] cells", "0 < marker_spacing <= 10 (in cells)");

@@ -1,4 +1,5 @@
 //! @file Snapshot fields and integral totals of the TVD state.
+#include <algorithm>
 #include <cmath>
 
 #include "eos_line.hpp"
@@ -54,8 +55,25 @@ Snapshot TvdSolver::snapshot() const {
         },
         materials_[static_cast<std::size_t>(id)].eos);
   }
-  s.fields = {std::move(rho), std::move(p),   std::move(v),
-              std::move(e),   std::move(mat), std::move(obj)};
+  if (phaseOn_) {
+    // As in the SPH snapshots: the Tillotson phase from e against the incipient (e1) and full
+    // (e2) vaporisation energies, and the vapour fraction (e - e1) / (e2 - e1) clamped to [0, 1].
+    Field frac{"vapour_fraction", "1", 1, std::vector<double>(n, 0.0)};
+    Field phase{"phase", "1", 1, std::vector<double>(n, 0.0)};
+    for (std::size_t c = 0; c < n; ++c) {
+      if (mat.data[c] < 0.0) continue;
+      const auto* t = std::get_if<eos::Tillotson>(
+          &materials_[static_cast<std::size_t>(mat.data[c])].eos);
+      if (t == nullptr) continue;
+      frac.data[c] = std::clamp((e.data[c] - t->e1) / (t->e2 - t->e1), 0.0, 1.0);
+      phase.data[c] = static_cast<double>(static_cast<int>(t->phase(e.data[c])));
+    }
+    s.fields = {std::move(rho), std::move(p),   std::move(v),    std::move(e),
+                std::move(mat), std::move(obj), std::move(frac), std::move(phase)};
+  } else {
+    s.fields = {std::move(rho), std::move(p),   std::move(v),
+                std::move(e),   std::move(mat), std::move(obj)};
+  }
   for (const auto& m : materials_) s.materialNames.push_back(m.name);
   if (markersOn_) {
     s.objectNames = bodyNames_;

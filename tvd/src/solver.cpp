@@ -101,6 +101,7 @@ void TvdSolver::setUpMaterials(const cases::Scene& scene) {
     rhoThin_.push_back(std::max(kThinFraction * m.rho0(), rhoCut_.back()));
   }
   markersOn_ = scene.has(cases::Effect::MaterialInterfaces);
+  phaseOn_ = scene.has(cases::Effect::PhaseBookkeeping);
   singleMaterial_ = scene.bodies.front().material;
   if (!markersOn_) {
     for (const auto& b : scene.bodies)

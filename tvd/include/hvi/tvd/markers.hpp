@@ -42,9 +42,10 @@ class MarkerSet {
                              Geometry g);
 
   //! Moves every marker with the cell-centred velocity (vx, vz arrays in cm/us, index k*nx+i)
-  //! bilinearly interpolated, for time dt (us). The solver passes the predictor-stage (time
-  //! centred) velocity; within the step the marker path is integrated by the explicit midpoint
-  //! rule in space, so the position error is O(dt^3) per step. Outside the cell-centre range
+  //! bilinearly interpolated, for time dt (us). The solver passes the time-centred velocity
+  //! (the mean of the start- and end-of-step cell velocities); within the step the marker path
+  //! is integrated by the explicit midpoint rule in space, so the position error is O(dt^3) per
+  //! step. Outside the cell-centre range
   //! the nearest values are used, except at the r-z axis where vx is reflected oddly (vx = 0 on
   //! the axis). In r-z, markers on the axis keep x = 0 and no marker goes to x < 0.
   void advect(const GridSpec& grid, const double* vx, const double* vz, double dt);

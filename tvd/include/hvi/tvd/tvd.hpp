@@ -148,6 +148,7 @@ class TvdSolver final : public Solver {
 
   // Markers (material_interfaces only).
   bool markersOn_ = false;
+  bool phaseOn_ = false;  // effect phase_bookkeeping: vapour fraction and phase in snapshots
   MarkerSet markerSet_;
   std::vector<int> owner_, ownerNew_, objectMaterial_;
   std::vector<Vec2> normal_, normalNew_;
