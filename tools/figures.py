@@ -7,11 +7,12 @@
 Runs the variant-1 and variant-2 scenes one after the other (or, with --reuse, uses results
 already in --results) and writes PNGs (named ..._coarse.png with --coarse): fig1 density maps
 (TVD, variant 1, r-z mirrored about the axis), fig2 material maps (variant 1), fig3 debris
-cloud at 7.2 us (variant 1: section and a synthetic radiograph), fig4 density maps (modified
+cloud at 7.2 us (variant 1: section and a synthetic radiograph), fig1b density maps (modified
+SPH in r-z, variant 1), fig4 density maps (modified
 SPH, variant 2), fig5a/b/c split pictures at 5 us (SPH left x < 0, TVD right x > 0:
 traditional SPH density, modified SPH density, material).
 Then `hvi compare` at 5 us for modified SPH vs TVD, traditional SPH vs TVD and modified vs
-traditional SPH, whose tables go to <out>/compare_<pair>[_coarse].txt. What each run did
+traditional SPH (variant 2), and at 7.2 us for SPH vs TVD (variant 1), whose tables go to <out>/compare_<pair>[_coarse].txt. What each run did
 (status, wall time from its summary.json, conservation) goes to <out>/runs[_coarse].json.
 A run that fails does not stop the others; its figures show what it wrote before failing.
 """
@@ -38,13 +39,15 @@ from plot_snapshot import axis_labels, draw, load, refit_markers  # noqa: E402
 
 RUNS = {
     "v1_tvd": "variant1_tvd",
+    "v1_sph": "variant1_sph",
     "v2_sph_mod": "variant2_sph_modified",
     "v2_sph_trad": "variant2_sph_traditional",
     "v2_tvd": "variant2_tvd",
 }
-PAIRS = [("modified_vs_tvd", "v2_sph_mod", "v2_tvd"),
-         ("traditional_vs_tvd", "v2_sph_trad", "v2_tvd"),
-         ("modified_vs_traditional", "v2_sph_mod", "v2_sph_trad")]
+PAIRS = [("modified_vs_tvd", "v2_sph_mod", "v2_tvd", 5.0),
+         ("traditional_vs_tvd", "v2_sph_trad", "v2_tvd", 5.0),
+         ("modified_vs_traditional", "v2_sph_mod", "v2_sph_trad", 5.0),
+         ("v1_sph_vs_tvd", "v1_sph", "v1_tvd", 7.2)]
 OBJECT_COLOURS = ["tab:red", "tab:blue"]  # object 0 striker, 1 shield; vacuum blank
 OBJECT_CMAP = ListedColormap(OBJECT_COLOURS)
 DENSITY_CMAP = "viridis"
@@ -273,11 +276,11 @@ def figure3(f, out, tag, note):
 
 
 def compare_pairs(hvi, dirs, results, out, suffix):
-    for name, a, b in PAIRS:
+    for name, a, b, t in PAIRS:
         if a not in dirs or b not in dirs:
             continue
         cdir = os.path.join(results, f"compare_{name}{suffix}")
-        cmd = [hvi, "compare", dirs[a], dirs[b], "--time", "5", "--out", cdir]
+        cmd = [hvi, "compare", dirs[a], dirs[b], "--time", f"{t:g}", "--out", cdir]
         print("figures:", " ".join(cmd), flush=True)
         r = subprocess.run(cmd, capture_output=True, text=True)
         text = f"$ {' '.join(cmd)}\n{r.stdout}{r.stderr}(exit status {r.returncode})\n"
@@ -345,6 +348,13 @@ def main():
             done = [f for _, f in snapshots(dirs["v1_tvd"]) if "failed_" not in f]
             f72 = done[-1] if done else None
         figure3(f72, png("fig3_v1_debris_cloud"), tag, note("v1_tvd"))
+
+    if "v1_sph" in dirs:
+        files = [(t, snapshot_at(dirs["v1_sph"], t)) for t in V1_TIMES]
+        panel_row(files, density_field, DENSITY_CMAP, 0.0, DENSITY_MAX,
+                  "Fig. 1b: variant 1 (sphere on plate, r-z mirrored about the axis), "
+                  "modified SPH density" + tag, png("fig1b_v1_sph_density"), V1_WINDOW, rho,
+                  note("v1_sph"))
 
     if "v2_sph_mod" in dirs:
         files = [(t, snapshot_at(dirs["v2_sph_mod"], t)) for t in V2_TIMES]
