@@ -99,16 +99,16 @@ TEST(SceneValidation, PolygonsAreReorientedAndChecked) {
             std::string::npos);
 }
 
+// The plate scene in r-z: domain and plate from the axis.
+std::string rzScene(const std::string& bodies) {
+  std::string t = plateScene(bodies, "geometry = \"rz\"");
+  const std::string planarX = "x = [\"-3 cm\", \"3 cm\"]";
+  for (int i = 0; i < 2; ++i)
+    t.replace(t.find(planarX), planarX.size(), "x = [\"0 cm\", \"3 cm\"]");
+  return t;
+}
+
 TEST(SceneValidation, AxisymmetricRules) {
-  const std::string rz = "geometry = \"rz\"";
-  auto rzScene = [&](const std::string& bodies) {
-    std::string t = plateScene(bodies, rz);
-    // r-z domain from the axis, and a plate from the axis.
-    const std::string planarX = "x = [\"-3 cm\", \"3 cm\"]";
-    for (int i = 0; i < 2; ++i)
-      t.replace(t.find(planarX), planarX.size(), "x = [\"0 cm\", \"3 cm\"]");
-    return t;
-  };
   EXPECT_TRUE(accepted(rzScene(disk("ball", "0 cm", "0.5 cm", "0.5 cm"))));
   const std::string moving =
       disk("ball", "0 cm", "0.5 cm", "0.5 cm") + "velocity = [\"1 km/s\", \"-6 km/s\"]\n";
@@ -156,14 +156,6 @@ TEST(SceneValidation, RadialVelocityField) {
                 .find("needs radial_velocity"),
             std::string::npos);
   // r-z: a body on the axis streams onto it; v = (speed, 0) off the axis, 0 on it; no centre.
-  const std::string rz = "geometry = \"rz\"";
-  auto rzScene = [&](const std::string& bodies) {
-    std::string t = plateScene(bodies, rz);
-    const std::string planarX = "x = [\"-3 cm\", \"3 cm\"]";
-    for (int i = 0; i < 2; ++i)
-      t.replace(t.find(planarX), planarX.size(), "x = [\"0 cm\", \"3 cm\"]");
-    return t;
-  };
   const std::string onAxis = disk("ball", "0 cm", "0.5 cm", "0.5 cm");
   const Scene r = parseScene(rzScene(onAxis + "radial_velocity = \"-5 km/s\"\n"), "v.toml");
   EXPECT_EQ(initialVelocity(named(r, "ball"), Geometry::Axisymmetric, {0.2, 0.7}),
