@@ -2,16 +2,19 @@
 """What accuracy costs in time: error against wall time for SPH and TVD (docs/study.md).
 
     /usr/bin/python3 tools/study.py [--quick] [--out results/study] [--reuse]
-        [--hvi build/bin/hvi] [--threads 1] [--jobs 1] [--only sod,al_tube,noh_planar,variant2]
-        [--figures docs/figures] [--selftest]
+        [--hvi build/bin/hvi] [--threads 1] [--jobs 1]
+        [--only sod,al_tube,noh_planar,noh_cyl,variant2] [--figures docs/figures] [--selftest]
 
 Sweeps resolution (and the TVD limiter, the SPH kernel and viscosity alpha) on problems with
-exact answers (Sod, the Tillotson aluminium impact tube, planar Noh) and on the variant-2 impact
-(error against the finest run of the same method, and against the finest TVD run). Writes
-<out>/study.csv, <out>/study.json, figures <figures>/study_<problem>.png and prints the observed
-orders. --reuse keeps runs already completed with the same arguments. --selftest checks the
-python exact solutions against published values and, if hvi is built, against the C++ exact
-Riemann solver.
+exact answers (Sod, the Tillotson aluminium impact tube, planar and cylindrical (r-z) Noh) and on
+the variant-2 impact (error against the finest run of the same method, and against the finest
+TVD run). Writes <out>/study.csv, <out>/study.json, <out>/study_tables.md, figures
+<figures>/study_<problem>.png and prints the observed orders. The tables keep the rows of the
+problems not run this time (from <out>/study.json), so `--only` adds or replaces problems
+without dropping the others; figures are drawn for the problems run. --reuse keeps runs already
+completed with the same arguments. --selftest checks the python exact solutions against
+published values, the r-z particle weights of the error measure, and, if hvi is built, the C++
+exact Riemann solver.
 """
 import argparse
 import csv
@@ -135,6 +138,7 @@ def main():
     if args.selftest:
         print("python exact solutions:")
         ok = ex.selftest()
+        ok &= ms.selftest_weights(os.path.join(args.out, "selftest"))
         if os.path.exists(args.hvi):
             from study_run import riemann_crosscheck
             ok &= riemann_crosscheck(args.hvi, os.path.join(args.out, "selftest"))
@@ -176,7 +180,7 @@ def main():
                 if summ.get("status") == "completed" and exacts[p] is not None:
                     err, extra = measure_exact(run, exacts[p])
                 elif summ.get("status") != "completed":
-                    extra = {"note": f"run {summ.get('status')}: {summ.get('error', '')[-200:]}"}
+                    extra = {"note": f"run {summ.get('status')}: {summ.get('error', '')[:160]}"}
                 rows.append(row_of(run, summ, err, extra))
         else:
             r, c = impact_rows(pruns, results, args.hvi, args.out)
@@ -186,8 +190,33 @@ def main():
     write_outputs(rows, cross, args, time.time() - t0)
 
 
+def base_problem(p):
+    return p[:-len("_vs_tvd")] if p.endswith("_vs_tvd") else p
+
+
+def merge_previous(rows, cross, out):
+    """Rows (and SPH-against-TVD lists) of the problems not run now, from <out>/study.json, so a
+    study of some problems (--only) does not drop the others' results; returns the merged rows,
+    the merged cross lists and the names of the problems kept."""
+    path = os.path.join(out, "study.json")
+    ran = {base_problem(r["problem"]) for r in rows} | set(cross)
+    if not os.path.exists(path):
+        return rows, cross, []
+    with open(path) as f:
+        old = json.load(f)
+    kept = [r for r in old.get("rows", []) if base_problem(r["problem"]) not in ran]
+    kept_cross = {p: c for p, c in old.get("sph_vs_tvd_same_resolution", {}).items()
+                  if p not in ran}
+    names = list(dict.fromkeys(r["problem"] for r in kept))
+    return kept + rows, {**kept_cross, **cross}, names
+
+
 def write_outputs(rows, cross, args, elapsed):
     os.makedirs(args.out, exist_ok=True)
+    new_problems = list(dict.fromkeys(r["problem"] for r in rows))
+    rows, cross, kept = merge_previous(rows, cross, args.out)
+    if kept:
+        print(f"study: kept the rows of {', '.join(kept)} from {args.out}/study.json")
     with open(os.path.join(args.out, "study.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=CSV_KEYS, extrasaction="ignore")
         w.writeheader()
@@ -196,14 +225,15 @@ def write_outputs(rows, cross, args, elapsed):
     summary = an.summarise(rows)
     targets = an.accuracy_table(rows, ACCURACY_TARGETS)
     doc = {"quick": args.quick, "cost": an.COST["key"], "threads_per_run": args.threads, "parallel_jobs": args.jobs,
-           "cpu_count": os.cpu_count(), "elapsed_seconds": elapsed, "rows": rows,
+           "cpu_count": os.cpu_count(), "elapsed_seconds": elapsed,
+           "kept_from_previous": kept, "rows": rows,
            "orders": summary, "sph_vs_tvd_same_resolution": cross,
            "seconds_for_error": {p: {str(t): v for t, v in d.items()} for p, d in targets.items()}}
     with open(os.path.join(args.out, "study.json"), "w") as f:
         json.dump(doc, f, indent=1)
     os.makedirs(args.figures, exist_ok=True)
-    for p in dict.fromkeys(r["problem"] for r in rows):
-        base = p.replace("_vs_tvd", "")
+    for p in new_problems:  # the kept problems' figures stay as they were drawn
+        base = base_problem(p)
         title = PROBLEMS[base]["title"] + ("\nerror against the finest TVD run"
                                            if p.endswith("_vs_tvd") else
                                            "\nerror against the finest run of the same method"
@@ -220,15 +250,15 @@ def write_outputs(rows, cross, args, elapsed):
         an.set_cost(chosen)
     with open(os.path.join(args.out, "study_tables.md"), "w") as f:
         f.write(an.markdown(rows, summary, targets, cross))
-    for p in dict.fromkeys(r["problem"] for r in rows):
+    for p in new_problems:
         prob = PROBLEMS.get(p)
         if prob and prob["kind"] == "exact" and prob["exact"][0] == "python":
             path = os.path.join(args.figures, f"study_profiles_{p}.png")
             if an.plot_profiles(rows, p, prob["exact"][1], prob["end"], prob["window"], path,
-                                profile_loader(prob["end"])):
+                                profile_loader(prob["end"]), prob.get("coordinate", "x")):
                 print(f"study: wrote {path}")
-    print_summary(summary, targets)
-    for p, lst in cross.items():
+    print_summary({p: summary[p] for p in new_problems if p in summary}, targets)
+    for p, lst in ((p, cross[p]) for p in new_problems if p in cross):
         print(f"\n{p}: SPH against TVD at the same resolution (rel L1 over material, min IoU)")
         for c in lst:
             iou = f"{c['iou_min']:.3f}" if c["iou_min"] is not None else "-"

@@ -202,9 +202,10 @@ def markdown(rows, summary, targets, cross):
     return "\n".join(out) + "\n"
 
 
-def plot_profiles(rows, problem, exact, end, window, path, load):
-    """Density against x at one resolution (the finest every method reached), all methods, with
-    the exact profile: what the L1 numbers are made of. `load(run_dir)` gives x, rho."""
+def plot_profiles(rows, problem, exact, end, window, path, load, coordinate="x"):
+    """Density against x (or r: `coordinate`) at one resolution (the finest every method
+    reached), all methods, with the exact profile: what the L1 numbers are made of.
+    `load(run_dir)` gives x, rho."""
     prs = [r for r in rows if r["problem"] == problem and r.get("error") is not None]
     if not prs:
         return False
@@ -215,7 +216,8 @@ def plot_profiles(rows, problem, exact, end, window, path, load):
     h = min(common) if common else min(r["resolution"] for r in prs)
     fig, ax = plt.subplots(figsize=(8.0, 4.6))
     a, b = window
-    xs = np.linspace(a - 0.1 * (b - a), b + 0.1 * (b - a), 4000)
+    lo = a - 0.1 * (b - a)
+    xs = np.linspace(max(lo, 0.0) if coordinate == "r" else lo, b + 0.1 * (b - a), 4000)
     ax.plot(xs, exact(xs, end), "k-", lw=1.5, label="exact", zorder=10)
     for r in sorted((r for r in prs if r["resolution"] == h), key=method_key):
         x, rho = load(r["run_dir"])
@@ -224,7 +226,7 @@ def plot_profiles(rows, problem, exact, end, window, path, load):
         ax.plot(x[o], rho[o], style, ms=2, lw=1, label=f"{method_key(r)} (E = {r['error']:.3g})")
     ax.axvspan(a, b, color="0.9", zorder=0)
     ax.set_xlim(xs[0], xs[-1])
-    ax.set_xlabel("x [cm]")
+    ax.set_xlabel(f"{coordinate} [cm]")
     ax.set_ylabel("density [g/cm^3]")
     ax.set_title(f"{problem}: density at t = {end:g} us, h = {h:g} cm (shaded: error window)",
                  fontsize=10)

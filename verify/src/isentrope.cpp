@@ -127,6 +127,15 @@ Isentrope::Isentrope(const eos::Eos& eos, double rho, double e) : eos_(eos), rho
       nodes_.push_back(end_);
       return;
     }
+    if (!(next.c > 0.0) && tension && nodes_.size() > 1) {
+      // A material that carries tension (Tillotson without the cut-off) leaves the EOS's
+      // hyperbolic domain on the way down (aluminium near rho / rho0 = 0.57): the isentrope
+      // ends at the last state with c > 0. Solutions that need lower pressures are refused by
+      // the Riemann solver (atPressure beyond the end).
+      end_ = last;
+      truncated_ = true;
+      return;
+    }
     if (!(next.c > 0.0)) {
       throw SimulationError(fmt::format(
           "verify: release isentrope from rho {}, e {} loses hyperbolicity (c^2 <= 0) at rho {}, "
@@ -205,6 +214,12 @@ Isentrope::Point Isentrope::solveMonotone(G&& g, double target) const {
 }
 
 Isentrope::Point Isentrope::atPressure(double p) const {
+  if (truncated_ && p < end_.p) {
+    throw SimulationError(fmt::format(
+        "verify: the release isentrope from rho {} ends where the EOS loses hyperbolicity (rho "
+        "{}, P {}); the solution needs P = {} (add the tension cut-off)",
+        rhoK_, end_.rho, end_.p, p));
+  }
   return solveMonotone([](const Point& q) { return -q.p; }, -p);
 }
 

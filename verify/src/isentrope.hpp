@@ -55,6 +55,7 @@ class Isentrope {
   std::vector<Point> nodes_;
   Point end_;
   bool tail_ = false;  //!< polytropic tail beyond the last node
+  bool truncated_ = false;  //!< ends where c^2 <= 0 (a material that carries tension)
   double k_ = 0.0;     //!< its exponent dln c / dln rho
 };
 

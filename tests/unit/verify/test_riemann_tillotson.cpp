@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "hvi/common/error.hpp"
 #include "hvi/verify/riemann.hpp"
 
 namespace hvi::verify {
@@ -210,6 +211,24 @@ TEST(RiemannTillotson, SpallEndsTheReleaseAtFiniteDensity) {
   EXPECT_GT(slow.starPressure(), 0.0);
   EXPECT_LT(slow.starPressure(), 0.05 * pL);
   std::printf("spall: rho_s = %.9f, e_s = %.9f, escape velocity %.9f cm/us\n", rhoS, eS, uEsc);
+}
+
+TEST(RiemannTillotson, WithoutCutoffImpactSolvesAndDeepReleaseIsRefused) {
+  // Without the cut-off Tillotson aluminium carries tension, and its formula c^2 turns negative
+  // near rho / rho0 = 0.57 on the release isentrope from (rho0, e = 0). The isentrope ends there
+  // instead of refusing the whole problem: an impact (two shocks) never needs it and must give
+  // the same star state as with the cut-off (P >= 0 everywhere), while a release that would
+  // need a pressure below the end is refused with an error that names the cut-off.
+  eos::Tillotson noCut = al;
+  noCut.tensionCutoff = false;
+  const RiemannState L{al.rho0, 0.7, 0.0}, R{al.rho0, 0.0, 0.0};
+  ExactRiemann with(al, L, al, R), without(noCut, L, noCut, R);
+  // Both root finds converge to ~1e-15 relative from different iteration paths.
+  EXPECT_NEAR(without.starPressure() / with.starPressure(), 1.0, 1e-12);
+  EXPECT_NEAR(without.starVelocity() / with.starVelocity(), 1.0, 1e-12);
+  std::printf("no cut-off: p* %.17g vs %.17g\n", without.starPressure(), with.starPressure());
+  EXPECT_THROW(ExactRiemann(noCut, {al.rho0, -0.5, 0.0}, noCut, {al.rho0, 0.5, 0.0}),
+               SimulationError);
 }
 
 }  // namespace
