@@ -13,7 +13,7 @@ namespace hvi::tvd {
 namespace {
 
 constexpr std::uint64_t kMagic = 0x31304456544956ULL;  // "VITVD01" little-endian tag
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;
 
 template <class T>
 void put(std::ostream& out, const T& v) {
@@ -82,6 +82,7 @@ void TvdSolver::writeCheckpoint(std::ostream& out) const {
   if (markersOn_) {
     putArray(out, owner_);
     putArray(out, normal_);
+    putArray(out, materialTarget_);
     markerSet_.write(out);
   }
   if (!out) throw SimulationError("tvd checkpoint: writing the state failed");
@@ -119,10 +120,13 @@ void TvdSolver::readCheckpoint(std::istream& in) {
     std::vector<Vec2> normal;
     getArray(in, owner, n, "owner");
     getArray(in, normal, n, "normal");
+    std::vector<double> target;
+    getArray(in, target, materials_.size(), "material target mass");
     MarkerSet ms;
     ms.read(in);
     owner_.swap(owner);
     normal_.swap(normal);
+    materialTarget_.swap(target);
     markerSet_ = std::move(ms);
   }
   U_ = std::move(U);

@@ -282,8 +282,10 @@ class LineSolver {
     for (int f = 1; f <= n_ + 1; ++f) {
       if (f == 1 && L_.leftEdge) {
         for (int k = 0; k < 4; ++k) B_.boundary[k] += h * W_.area[f] * W_.fluxR[f][k];
+        B_.edgeMass[0] += h * W_.area[f] * W_.fluxR[f][0];
       } else if (f == n_ + 1 && L_.rightEdge) {
         for (int k = 0; k < 4; ++k) B_.boundary[k] -= h * W_.area[f] * W_.fluxL[f][k];
+        B_.edgeMass[1] -= h * W_.area[f] * W_.fluxL[f][0];
       } else if (Markers && W_.kind[f] != FaceKind::Regular) {
         for (int k = 0; k < 4; ++k)
           B_.interfaces[k] += h * W_.area[f] * (W_.fluxR[f][k] - W_.fluxL[f][k]);

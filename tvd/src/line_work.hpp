@@ -28,6 +28,7 @@ enum class FaceKind : signed char {
 //! Line-local amounts (mass, normal momentum, tangential momentum, energy).
 struct LineBudget {
   std::array<double, 4> boundary{}, interfaces{}, floors{};
+  std::array<double, 2> edgeMass{};  // mass in through the low / high domain edge
 };
 
 //! Buffers for one line of up to `capacity` cells plus two ghost cells at each end. Sized once,

@@ -171,6 +171,75 @@ void TvdSolver::updateMarkers(double dt) {
   ownerChangeCount_ += static_cast<long>(changes.size()) + relabelled;
   owner_.swap(ownerNew_);
   normal_.swap(normalNew_);
+  renormaliseMaterials();
+}
+
+// Whole-cell ownership is not conservative: a cell taken over is filled from its new owner's
+// neighbours, a vacated one is emptied, and the two-sided interface fluxes differ. For a body
+// in uniform motion these balance to within the cells in flight at its surface; where a marker
+// outruns its material (a dense striker) they do not, and the object keeps gaining mass. So
+// after every owner update each material's mass is compared with the mass it must have (its
+// initial mass plus what crossed the domain boundary). A difference within half a layer of the
+// material's interface cells (sum of rho V / 2 over its cells with a face neighbour of another
+// material or vacuum) is the position error of whole-cell interfaces and is left alone:
+// correcting it would turn it into a density error, and a body in uniform motion would no
+// longer keep its state exactly. What exceeds that band is drift: the material is scaled, as a
+// whole, back to the band's edge, with one factor for density, momentum and energy, so
+// velocities and specific energies are untouched. The scaled amounts are booked under owner
+// changes.
+void TvdSolver::renormaliseMaterials() {
+  const std::size_t nm = materialTarget_.size();
+  std::fill(materialMass_.begin(), materialMass_.end(), 0.0);
+  std::fill(materialBand_.begin(), materialBand_.end(), 0.0);
+  const int nx = grid_.nx, nz = grid_.nz;
+  auto materialAt = [&](long c) {
+    const int o = owner_[static_cast<std::size_t>(c)];
+    return o < 0 ? -1 : objectMaterial_[static_cast<std::size_t>(o)];
+  };
+  for (int k = 0; k < nz; ++k)
+    for (int i = 0; i < nx; ++i) {
+      const long c = static_cast<long>(k) * nx + i;
+      const int m = materialAt(c);
+      if (m < 0) continue;
+      const double mc = U_.rho[static_cast<std::size_t>(c)] * cellVolume(c);
+      materialMass_[static_cast<std::size_t>(m)] += mc;
+      const bool surface = (i > 0 && materialAt(c - 1) != m) ||
+                           (i + 1 < nx && materialAt(c + 1) != m) ||
+                           (k > 0 && materialAt(c - nx) != m) ||
+                           (k + 1 < nz && materialAt(c + nx) != m);
+      if (surface) materialBand_[static_cast<std::size_t>(m)] += 0.5 * mc;
+    }
+  bool any = false;
+  for (std::size_t m = 0; m < nm; ++m) {
+    const double mass = materialMass_[m], target = materialTarget_[m];
+    const double drift = mass - target, band = materialBand_[m];
+    double f = 1.0;
+    if (mass > 0.0 && target > 0.0 && std::abs(drift) > band)
+      f = (target + std::copysign(band, drift)) / mass;
+    materialMass_[m] = f;  // reused: scale factor per material
+    any = any || f != 1.0;
+  }
+  if (!any) return;
+  Budget fix;
+  const long cells = grid_.cells();
+  for (long c = 0; c < cells; ++c) {
+    const int m = materialAt(c);
+    if (m < 0) continue;
+    const double f = materialMass_[static_cast<std::size_t>(m)];
+    if (f == 1.0) continue;
+    const auto cc = static_cast<std::size_t>(c);
+    const double v = cellVolume(c);
+    fix.mass += (f - 1.0) * U_.rho[cc] * v;
+    fix.momentumX += (f - 1.0) * U_.mx[cc] * v;
+    fix.momentumZ += (f - 1.0) * U_.mz[cc] * v;
+    fix.energy += (f - 1.0) * U_.E[cc] * v;
+    U_.rho[cc] *= f;
+    U_.mx[cc] *= f;
+    U_.mz[cc] *= f;
+    U_.E[cc] *= f;
+  }
+  if (geometry_ == Geometry::Axisymmetric) fix.momentumX = 0.0;
+  ledger_.ownerChanges += fix;
 }
 
 }  // namespace hvi::tvd

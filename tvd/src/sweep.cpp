@@ -220,6 +220,12 @@ void TvdSolver::sweep(int direction, double dt) {
         (xdir ? B.momentumZ : B.momentumX) += lineScale * v[2];
         B.energy += lineScale * v[3];
       };
+      if (own != nullptr) {  // per material, for renormaliseMaterials()
+        if (setup.leftEdge && W.mat[2] >= 0)
+          ws.boundaryMass[static_cast<std::size_t>(W.mat[2])] += lineScale * lb.edgeMass[0];
+        if (setup.rightEdge && W.mat[n + 1] >= 0)
+          ws.boundaryMass[static_cast<std::size_t>(W.mat[n + 1])] += lineScale * lb.edgeMass[1];
+      }
       add(ws.boundary, lb.boundary);
       add(ws.interfaces, lb.interfaces);
       add(ws.floors, lb.floors);
@@ -230,6 +236,10 @@ void TvdSolver::sweep(int direction, double dt) {
     ledger_.interfaces += w->interfaces;
     ledger_.floors += w->floors;
     w->boundary = w->interfaces = w->floors = Budget{};
+    for (std::size_t m = 0; m < w->boundaryMass.size(); ++m) {
+      materialTarget_[m] += w->boundaryMass[m];
+      w->boundaryMass[m] = 0.0;
+    }
   }
   for (auto& w : work_) {
     if (w->failed) {

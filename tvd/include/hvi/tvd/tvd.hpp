@@ -157,6 +157,10 @@ class TvdSolver final : public Solver {
     long cell;
     double rho, mx, mz, E;
   };
+  // Per material: the mass it must have, its initial mass plus what crossed the domain boundary
+  // (renormaliseMaterials, docs/tvd.md "Mass renormalisation").
+  std::vector<double> materialTarget_, materialMass_, materialBand_;
+  void renormaliseMaterials();
   std::vector<Change> changes_;       // scratch of updateMarkers
   std::vector<signed char> known_;    // scratch: cell has a velocity for the markers
   std::vector<long> fresh_;           // scratch: cells given a velocity in this ring
