@@ -174,6 +174,27 @@ void TvdSolver::updateMarkers(double dt) {
   renormaliseMaterials();
 }
 
+// Each material's mass, and its band: half the mass of its cells with a face neighbour of
+// another material or vacuum.
+void TvdSolver::measureMaterials() {
+  std::fill(materialMass_.begin(), materialMass_.end(), 0.0);
+  std::fill(materialBand_.begin(), materialBand_.end(), 0.0);
+  const int nx = grid_.nx, nz = grid_.nz;
+  for (int k = 0; k < nz; ++k)
+    for (int i = 0; i < nx; ++i) {
+      const long c = static_cast<long>(k) * nx + i;
+      const int m = cellMaterial(c);
+      if (m < 0) continue;
+      const double mc = U_.rho[static_cast<std::size_t>(c)] * cellVolume(c);
+      materialMass_[static_cast<std::size_t>(m)] += mc;
+      const bool surface = (i > 0 && cellMaterial(c - 1) != m) ||
+                           (i + 1 < nx && cellMaterial(c + 1) != m) ||
+                           (k > 0 && cellMaterial(c - nx) != m) ||
+                           (k + 1 < nz && cellMaterial(c + nx) != m);
+      if (surface) materialBand_[static_cast<std::size_t>(m)] += 0.5 * mc;
+    }
+}
+
 // Whole-cell ownership is not conservative: a cell taken over is filled from its new owner's
 // neighbours, a vacated one is emptied, and the two-sided interface fluxes differ. For a body
 // in uniform motion these balance to within the cells in flight at its surface; where a marker
@@ -189,26 +210,7 @@ void TvdSolver::updateMarkers(double dt) {
 // changes.
 void TvdSolver::renormaliseMaterials() {
   const std::size_t nm = materialTarget_.size();
-  std::fill(materialMass_.begin(), materialMass_.end(), 0.0);
-  std::fill(materialBand_.begin(), materialBand_.end(), 0.0);
-  const int nx = grid_.nx, nz = grid_.nz;
-  auto materialAt = [&](long c) {
-    const int o = owner_[static_cast<std::size_t>(c)];
-    return o < 0 ? -1 : objectMaterial_[static_cast<std::size_t>(o)];
-  };
-  for (int k = 0; k < nz; ++k)
-    for (int i = 0; i < nx; ++i) {
-      const long c = static_cast<long>(k) * nx + i;
-      const int m = materialAt(c);
-      if (m < 0) continue;
-      const double mc = U_.rho[static_cast<std::size_t>(c)] * cellVolume(c);
-      materialMass_[static_cast<std::size_t>(m)] += mc;
-      const bool surface = (i > 0 && materialAt(c - 1) != m) ||
-                           (i + 1 < nx && materialAt(c + 1) != m) ||
-                           (k > 0 && materialAt(c - nx) != m) ||
-                           (k + 1 < nz && materialAt(c + nx) != m);
-      if (surface) materialBand_[static_cast<std::size_t>(m)] += 0.5 * mc;
-    }
+  measureMaterials();
   bool any = false;
   for (std::size_t m = 0; m < nm; ++m) {
     const double mass = materialMass_[m], target = materialTarget_[m];
@@ -223,7 +225,7 @@ void TvdSolver::renormaliseMaterials() {
   Budget fix;
   const long cells = grid_.cells();
   for (long c = 0; c < cells; ++c) {
-    const int m = materialAt(c);
+    const int m = cellMaterial(c);
     if (m < 0) continue;
     const double f = materialMass_[static_cast<std::size_t>(m)];
     if (f == 1.0) continue;

@@ -42,16 +42,10 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
   initialiseState(scene);
   if (markersOn_) {
     for (auto& w : work_) w->boundaryMass.assign(materials_.size(), 0.0);
-    materialTarget_.assign(materials_.size(), 0.0);
     materialMass_.assign(materials_.size(), 0.0);
     materialBand_.assign(materials_.size(), 0.0);
-    const long cells = grid_.cells();
-    for (long c = 0; c < cells; ++c) {
-      const int o = owner_[static_cast<std::size_t>(c)];
-      if (o >= 0)
-        materialTarget_[static_cast<std::size_t>(objectMaterial_[static_cast<std::size_t>(o)])] +=
-            U_.rho[static_cast<std::size_t>(c)] * cellVolume(c);
-    }
+    measureMaterials();
+    materialTarget_ = materialMass_;
   }
 }
 

@@ -43,12 +43,18 @@ std::vector<fs::path> snapshots(const fs::path& dir, const std::string& prefix =
   return v;
 }
 
-// A few-second impact: the default scene (coarse variant 2), coarser still and shorter.
-app::RunOptions smallImpact(const std::string& solver, const fs::path& out) {
+// A quiet run of a shipped scene into `out`.
+app::RunOptions quietRun(const std::string& name, const fs::path& out) {
   app::RunOptions o;
-  o.scene = scene("default");
+  o.scene = scene(name);
   o.out = out;
   o.quiet = true;
+  return o;
+}
+
+// A few-second impact: the default scene (coarse variant 2), coarser still and shorter.
+app::RunOptions smallImpact(const std::string& solver, const fs::path& out) {
+  app::RunOptions o = quietRun("default", out);
   // Each solver with the effects it supports (an unsupported effect is an input error).
   const std::string effects = solver == "sph"
       ? R"(effects=["artificial_viscosity", "tension_cutoff", "mass_adjustment", "features"])"
@@ -62,11 +68,7 @@ app::RunOptions smallImpact(const std::string& solver, const fs::path& out) {
 
 TEST(Driver, RiemannSceneWritesEveryOutput) {
   const fs::path out = freshDir("riemann");
-  app::RunOptions o;
-  o.scene = scene("sod_x");
-  o.out = out;
-  o.quiet = true;
-  ASSERT_EQ(app::runScene(o), app::kOk);
+  ASSERT_EQ(app::runScene(quietRun("sod_x", out)), app::kOk);
   for (const char* f : {"scene.toml", "hvi.pvd", "summary.json", "timeseries.json", "checkpoint.bin"})
     EXPECT_TRUE(fs::exists(out / f)) << f;
   const auto snaps = snapshots(out);
@@ -96,11 +98,7 @@ TEST(Driver, RiemannSceneWritesEveryOutput) {
 // rho / rho0 = 0.57 (c^2 <= 0). Star state: docs/verification.md, p* = 0.9882128 Mbar.
 TEST(Driver, ShippedTillotsonTubeRunsWithTheExactSolver) {
   const fs::path out = freshDir("al_tube_riemann");
-  app::RunOptions o;
-  o.scene = scene("al_impact_tube");
-  o.out = out;
-  o.quiet = true;
-  ASSERT_EQ(app::runScene(o), app::kOk);
+  ASSERT_EQ(app::runScene(quietRun("al_impact_tube", out)), app::kOk);
   const Snapshot last = io::readHdf5(snapshots(out).back());
   const Field* p = last.find("pressure");
   ASSERT_NE(p, nullptr);

@@ -160,7 +160,12 @@ class TvdSolver final : public Solver {
   // Per material: the mass it must have, its initial mass plus what crossed the domain boundary
   // (renormaliseMaterials, docs/tvd.md "Mass renormalisation").
   std::vector<double> materialTarget_, materialMass_, materialBand_;
+  void measureMaterials();  // materialMass_ and materialBand_ of the current state
   void renormaliseMaterials();
+  [[nodiscard]] int cellMaterial(long cell) const {
+    const int o = owner_[static_cast<std::size_t>(cell)];
+    return o < 0 ? -1 : objectMaterial_[static_cast<std::size_t>(o)];
+  }
   std::vector<Change> changes_;       // scratch of updateMarkers
   std::vector<signed char> known_;    // scratch: cell has a velocity for the markers
   std::vector<long> fresh_;           // scratch: cells given a velocity in this ring
