@@ -100,12 +100,11 @@ std::size_t materialIndex(const TableReader& b, const Scene& scene) {
 
 // Lowest specific energy where the EOS is defined: an ideal gas has no negative energy;
 // Tillotson needs w = 1 + e / (e0 delta^2) > 0; compressed states at P = 0 lie below e = 0.
-double lowestEnergy(const eos::Eos& eos, double rho) {
+double lowestEnergy(const eos::Eos& eos) {
   if (std::holds_alternative<eos::IdealGas>(eos)) return 0.0;
-  if (const auto* t = std::get_if<eos::Tillotson>(&eos)) {
-    const double d = rho / t->rho0;
-    return -t->e0 * d * d;
-  }
+  // Tillotson's e is measured from the cold reference state; below it the EOS adds no thermal
+  // pressure (docs/eos.md), so a body cannot start there.
+  if (std::holds_alternative<eos::Tillotson>(eos)) return 0.0;
   return -std::numeric_limits<double>::infinity();
 }
 
@@ -114,14 +113,12 @@ double initialEnergy(const TableReader& b, const eos::Eos& eos, double rho) {
   if (b.has("pressure") && b.has("specific_energy"))
     b.fail("pressure", "give either pressure or specific_energy, not both",
            "pressure or specific_energy");
-  const double eMin = lowestEnergy(eos, rho);
+  const double eMin = lowestEnergy(eos);
   if (b.has("specific_energy")) {
     const double e = b.quantity("specific_energy", Dimension::SpecificEnergy);
-    const bool open = std::holds_alternative<eos::Tillotson>(eos);  // w = 0 is a pole
-    b.check(open ? e > eMin : e >= eMin, "specific_energy",
+    b.check(e >= eMin, "specific_energy",
             "below where the " + eos::kindName(eos) + " EOS is defined at this density",
-            std::string("a specific energy ") + (open ? "> " : ">= ") + shortNumber(eMin) +
-                " cm^2/us^2");
+            "a specific energy >= " + shortNumber(eMin) + " cm^2/us^2");
     return e;
   }
   if (!b.has("pressure")) return 0.0;

@@ -18,9 +18,9 @@ std::string kindName(const Eos& eos) {
 
 namespace {
 
-// Lowest specific energy where the EOS formula is defined and increasing in e, and whether it
-// can carry tension. Tillotson's w = 1 + e/(e0 delta^2) must stay positive: past its pole the
-// formula turns back and a bracket spanning it would converge to a spurious root.
+// Lowest specific energy where the EOS is increasing in e, and whether it can carry tension.
+// Tillotson carries no thermal pressure below e = 0 (P(rho, e < 0) = P(rho, 0), tillotson.cpp),
+// so a pressure below its cold curve P(rho, 0) has no state.
 struct EnergyDomain {
   double eMin;
   bool tension;
@@ -29,8 +29,7 @@ EnergyDomain energyDomain(const Eos& eos, double rho) {
   struct V {
     double rho;
     EnergyDomain operator()(const Tillotson& t) const {
-      const double d = rho / t.rho0;
-      return {-t.e0 * d * d, !t.tensionCutoff};
+      return {0.0, !t.tensionCutoff};
     }
     EnergyDomain operator()(const IdealGas&) const { return {0.0, false}; }
     EnergyDomain operator()(const MieGruneisen& m) const { return {-1e300, !m.tensionCutoff}; }
@@ -58,6 +57,7 @@ double energyForPressure(const Eos& eos, double rho, double p) {
   };
   double lo = 0.0, hi = 1.0;
   if (f(lo) > 0.0) {
+    if (dom.eMin == 0.0) throw noState();  // below the cold curve
     // Walk down: halving the gap to eMin (where the Tillotson formula falls to -inf), or
     // doubling outwards when the formula has no lower bound in e.
     const bool bounded = dom.eMin > -1e300;

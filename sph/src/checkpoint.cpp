@@ -11,7 +11,10 @@
 namespace hvi::sph {
 namespace {
 
-constexpr char kMagic[8] = {'H', 'V', 'I', 'S', 'P', 'H', '0', '1'};
+constexpr char kMagic[8] = {'H', 'V', 'I', 'S', 'P', 'H', '0', '2'};
+// Version 1 had no dt0 (the collapse check's reference); it is read with dt0 = 0, which the next
+// step sets again.
+constexpr char kMagicV1[8] = {'H', 'V', 'I', 'S', 'P', 'H', '0', '1'};
 
 template <class T>
 void put(std::ostream& out, const T& v) {
@@ -46,6 +49,7 @@ void Stepper::writeState(std::ostream& out) const {
   put<std::int32_t>(out, static_cast<std::int32_t>(s.materials.size()));
   put(out, s.t);
   put<std::int64_t>(out, s.steps);
+  put(out, s.dt0);
   put(out, s.out.mass);
   put(out, s.out.momentumX);
   put(out, s.out.momentumZ);
@@ -69,7 +73,8 @@ void Stepper::readState(std::istream& in) {
   Impl& s = *impl_;
   char magic[sizeof kMagic];
   in.read(magic, sizeof magic);
-  if (!in || std::memcmp(magic, kMagic, sizeof kMagic) != 0)
+  const bool v1 = in && std::memcmp(magic, kMagicV1, sizeof kMagicV1) == 0;
+  if (!in || (!v1 && std::memcmp(magic, kMagic, sizeof kMagic) != 0))
     throw InputError("SPH checkpoint: not an hvi SPH state (bad magic)");
   const auto n = get<std::uint64_t>(in);
   const auto geom = get<std::int32_t>(in);
@@ -82,6 +87,7 @@ void Stepper::readState(std::istream& in) {
         geom, nmat, static_cast<int>(s.cfg.geometry), s.materials.size()));
   s.t = get<double>(in);
   s.steps = get<std::int64_t>(in);
+  s.dt0 = v1 ? 0.0 : get<double>(in);
   s.out.mass = get<double>(in);
   s.out.momentumX = get<double>(in);
   s.out.momentumZ = get<double>(in);

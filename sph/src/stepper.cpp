@@ -14,6 +14,7 @@
 namespace hvi::sph {
 namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
+constexpr double kDtCollapseFraction = 1e-6;
 }
 
 Stepper::Impl::Impl(const ParticleSystem& ps, std::vector<eos::Eos> mats, StepperConfig config)
@@ -117,24 +118,52 @@ void Stepper::Impl::corrector() {
   bounds.refreshGhosts(a, n);
 }
 
+double Stepper::Impl::particleTimeStep(std::size_t i, bool* byAcceleration) const {
+  const double v = std::hypot(a.vx[i], a.vz[i]);
+  // Monaghan (1989): signal speed c + 0.6 (alpha c + beta max|phi|); |v| as well, which
+  // also bounds the motion in the half step (the list skin relies on it).
+  double signal = a.c[i] + v;
+  if (cfg.viscosity) signal += 0.6 * (cfg.visc.alpha * a.c[i] + cfg.visc.beta * std::abs(phi0[i]));
+  const double dtSignal = cfg.cfl * a.h[i] / signal;
+  const double acc = std::hypot(ax0[i], az0[i]);
+  const double dtAcc = acc > 0.0 ? cfg.cfl * std::sqrt(a.h[i] / acc) : dtSignal;
+  if (byAcceleration) *byAcceleration = dtAcc < dtSignal;
+  return std::min(dtSignal, dtAcc);
+}
+
 double Stepper::Impl::timeStep() const {
   const long nl = static_cast<long>(n);
-  const double cfl = cfg.cfl, alpha = cfg.visc.alpha, beta = cfg.visc.beta;
-  const bool visc = cfg.viscosity;
   double dt = std::numeric_limits<double>::infinity();
 #pragma omp parallel for schedule(static) if (nl > detail::kParallelElements) reduction(min : dt)
-  for (long i = 0; i < nl; ++i) {
-    const double v = std::hypot(a.vx[i], a.vz[i]);
-    // Monaghan (1989): signal speed c + 0.6 (alpha c + beta max|phi|); |v| as well, which
-    // also bounds the motion in the half step (the list skin relies on it).
-    double signal = a.c[i] + v;
-    if (visc) signal += 0.6 * (alpha * a.c[i] + beta * std::abs(phi0[i]));
-    double dti = cfl * a.h[i] / signal;
-    const double acc = std::hypot(ax0[i], az0[i]);
-    if (acc > 0.0) dti = std::min(dti, cfl * std::sqrt(a.h[i] / acc));
-    dt = std::min(dt, dti);
-  }
+  for (long i = 0; i < nl; ++i) dt = std::min(dt, particleTimeStep(static_cast<std::size_t>(i)));
   return dt;
+}
+
+void Stepper::Impl::throwCollapse(double dt) const {
+  // Only on failure: a serial pass finds the particle that set dt.
+  std::size_t worst = 0;
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double d = particleTimeStep(i);
+    if (!(d >= best)) {  // also catches NaN
+      best = d;
+      worst = i;
+    }
+  }
+  bool byAcc = false;
+  (void)particleTimeStep(worst, &byAcc);
+  const std::size_t i = worst;
+  const int o = a.obj[i];
+  const std::string obj = (o >= 0 && o < static_cast<int>(cfg.objectNames.size()))
+                              ? cfg.objectNames[static_cast<std::size_t>(o)]
+                              : std::to_string(o);
+  throw SimulationError(fmt::format(
+      "SPH time step collapsed at step {}, t = {} us: dt = {:.3e} us (first step {:.3e} us), "
+      "set by the {} of particle {} of object '{}' (material {}): x = {}, z = {} cm, "
+      "v = ({}, {}) cm/us, a = ({:.3e}, {:.3e}) cm/us^2, rho = {} g/cm^3, e = {} cm^2/us^2, "
+      "P = {} Mbar, c = {} cm/us, h = {} cm",
+      steps, t, dt, dt0, byAcc ? "acceleration" : "signal speed", id[i], obj, mat[i], a.x[i],
+      a.z[i], a.vx[i], a.vz[i], ax0[i], az0[i], a.rho[i], e[i], a.p[i], a.c[i], a.h[i]));
 }
 
 void Stepper::Impl::removeOutflow() {
@@ -184,9 +213,10 @@ double Stepper::step(double tStop) {
                              s.phi0.data()};
   s.passCached(a, s.n, s.list, s.cfg.visc, s.axis.get(), ratesN);
   double dt = s.timeStep();
-  if (!(dt > 0.0))
-    throw SimulationError(fmt::format("SPH time step {} at step {}, t = {} us is not positive",
-                                      dt, s.steps, s.t));
+  if (s.dt0 == 0.0 && dt > 0.0 && std::isfinite(dt)) s.dt0 = dt;
+  // A step a million times below the first means a particle driven to a singular state
+  // (the same threshold as the TVD solver and the driver); stop and name it.
+  if (!(dt > kDtCollapseFraction * s.dt0)) s.throwCollapse(dt);
   // The last step lands on tStop exactly (an output time).
   if (s.t + dt >= tStop) dt = tStop - s.t;
   const double half = 0.5 * dt;

@@ -20,6 +20,9 @@ struct Stepper::Impl {
   void checkState(const char* stage) const;
   void removeOutflow();
   double timeStep() const;   // CFL limit from the rates of the cached pass
+  double particleTimeStep(std::size_t i, bool* byAcceleration = nullptr) const;
+  //! Throws SimulationError naming the particle that set a collapsed dt.
+  [[noreturn]] void throwCollapse(double dt) const;
 
   StepperConfig cfg;
   std::vector<eos::Eos> materials;
@@ -45,6 +48,7 @@ struct Stepper::Impl {
   NeighbourList list;
   double t = 0.0;
   long steps = 0;
+  double dt0 = 0.0;            // first CFL step: the reference of the dt-collapse check
   Totals out;                  // accumulated outflow
 };
 

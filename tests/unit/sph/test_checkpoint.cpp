@@ -4,6 +4,8 @@
 #include <cstring>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "hvi/common/error.hpp"
 #include "hvi/sph/sph.hpp"
 #include "sph_test_scenes.hpp"
@@ -55,6 +57,41 @@ void checkRestart(Geometry g) {
 
 TEST(Checkpoint, PlanarRestartIsBitForBit) { checkRestart(Geometry::Planar); }
 TEST(Checkpoint, RzRestartIsBitForBit) { checkRestart(Geometry::Axisymmetric); }
+
+// A time step a million times below the first stops the run, and the message names the particle
+// that set it. The state is made singular by patching one particle's energy in a checkpoint
+// (the only way in between steps): e = 1e16 cm^2/us^2 gives c ~ a sqrt(e) = 5e7 cm/us against
+// the cold 0.52 cm/us, so dt falls by ~1e8 (> 1e6) whichever limit (signal or acceleration) sets it.
+TEST(Checkpoint, TimeStepCollapseNamesTheParticle) {
+  const cases::Scene s = scene(Geometry::Planar);
+  SphSolver solver(s);
+  for (int k = 0; k < 3; ++k) solver.advance(1e9);
+  std::stringstream ckpt;
+  solver.writeCheckpoint(ckpt);
+  std::string bytes = ckpt.str();
+  const ParticleSystem ps = solver.stepper().particles();
+  const std::size_t n = ps.size(), k = n / 2;
+  // Layout (sph/src/checkpoint.cpp): magic 8, n 8, geometry 4, materials 4, t 8, steps 8, dt0 8,
+  // outflow 5 x 8; then x, z, vx, vz, h (doubles), object (int), e (doubles).
+  const std::size_t eAt = 88 + 5 * n * sizeof(double) + n * sizeof(int) + k * sizeof(double);
+  double eOld = 0.0;
+  std::memcpy(&eOld, bytes.data() + eAt, sizeof eOld);
+  ASSERT_EQ(eOld, ps.e[k]);  // the layout is what this test assumes
+  const double hot = 1e16;
+  std::memcpy(bytes.data() + eAt, &hot, sizeof hot);
+  SphSolver restarted(s);
+  std::stringstream patched(bytes);
+  restarted.readCheckpoint(patched);
+  try {
+    restarted.advance(1e9);
+    FAIL() << "a collapsed time step must stop the run";
+  } catch (const SimulationError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("time step collapsed at step 3"), std::string::npos) << msg;
+    EXPECT_NE(msg.find(fmt::format("particle {} of object", ps.id[k])), std::string::npos) << msg;
+    EXPECT_NE(msg.find("e = 1e+16"), std::string::npos) << msg;
+  }
+}
 
 TEST(Checkpoint, ForeignDataIsAnInputError) {
   SphSolver solver(scene(Geometry::Planar));
