@@ -1,0 +1,65 @@
+//! @file The shipped coarse variant-1 scenes (sphere on plate, r-z) run to 7.2 us with both solvers
+//! and `hvi compare` measures them. Regression: the SPH run used to stop at 6.26 us with a
+//! time-step collapse (a particle at e < 0 hit Tillotson's pole at w = 0; docs/eos.md).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "variant2_runs.hpp"
+
+namespace hvi::compare::regression {
+namespace {
+
+nlohmann::json readJson(const fs::path& p) {
+  std::ifstream in(p);
+  if (!in) throw std::runtime_error("cannot read " + p.string());
+  return nlohmann::json::parse(in);
+}
+
+int runShipped(const std::string& scene, const fs::path& out) {
+  app::RunOptions o;
+  o.scene = scenePath(scene);
+  o.out = out;
+  o.overrides = {"output.vtk=false"};
+  o.quiet = true;
+  return app::runScene(o);
+}
+
+TEST(Variant1Coarse, BothSolversReachTheEndAndCompare) {
+  const fs::path root = testRoot();
+  ASSERT_EQ(runShipped("variant1_sph_coarse", root / "sph"), 0);
+  ASSERT_EQ(runShipped("variant1_tvd_coarse", root / "tvd"), 0);
+  const auto sph = readJson(root / "sph" / "summary.json");
+  EXPECT_EQ(sph["status"], "completed");
+  EXPECT_DOUBLE_EQ(sph["final_time_us"].get<double>(), 7.2);
+  // SPH: masses are fixed per particle (bitwise), and the pair sums exchange energy
+  // antisymmetrically, so only the time integration changes the total: the hard-case bound 5e-3
+  // (docs/hard_cases.md). A particle thrown by a singular EOS state shows up here first.
+  EXPECT_EQ(sph["conservation"]["mass_rel_error"].get<double>(), 0.0);
+  EXPECT_LE(std::abs(sph["conservation"]["energy_rel_error"].get<double>()), 5e-3);
+
+  CompareCliOptions o;
+  o.time = 7.2;
+  o.out = root / "cmp";
+  o.quiet = true;
+  ASSERT_EQ(runCompareCommand(root / "sph", root / "tvd", o), 0);
+  const auto j = readJson(root / "cmp" / "compare.json");
+  const double cell = j["grid"]["dx"].get<double>();
+  const auto& d = j["features_diff"];
+  for (const char* key : {"hole_radius", "cloud_leading_edge_z", "striker_centroid_z"})
+    std::printf("%-22s SPH %.4f TVD %.4f  TVD - SPH %+.2f cells\n", key,
+                j["a"]["features"][key].get<double>(), j["b"]["features"][key].get<double>(),
+                d[key].get<double>() / cell);
+  // The striker's centroid moves with the striker's momentum, which both methods exchange with
+  // the shield through the same contact pressure; measured to one cell on the common grid by
+  // each side: 2 cells (measured 0.4). Hole and cloud front are printed, not bounded: they are
+  // where the methods differ (docs/figures.md).
+  EXPECT_LE(std::abs(d["striker_centroid_z"].get<double>()), 2.0 * cell + 1e-9);
+}
+
+}  // namespace
+}  // namespace hvi::compare::regression
