@@ -40,6 +40,40 @@ void checkAxisymmetric(const TableReader& b, const Body& body, double tol) {
             "velocity = [\"0 km/s\", vz], or radial_velocity for flow onto the axis");
 }
 
+// Memory per work item measured on the hard cases (peak RSS against items): ~1 KiB per SPH
+// particle (state, step arrays and the Gaussian kernel's ~30-60 neighbours per particle), ~250 B
+// per TVD cell (conserved state, predictor copy, fluxes, ownership). The caps keep a run near
+// 10 GiB, under the 24 GiB of the machines this project targets, and keep item counts far from
+// integer overflow; a scene beyond them is refused before anything is allocated.
+constexpr double kMaxParticles = 1e7;
+constexpr double kMaxCells = 5e7;
+
+void checkSize(const TableReader& root, const Scene& scene, const std::string& section,
+               const std::string& key, const std::string& what, double h) {
+  const Domain& d = scene.domain;
+  double area = 0.0;
+  double cap = kMaxCells;
+  if (scene.solver == SolverKind::Sph) {
+    cap = kMaxParticles;  // particles fill the bodies: their boxes clipped to the domain
+    for (const Body& body : scene.bodies) {
+      const Box bb = boundingBox(body.shape);
+      area += std::max(0.0, std::min(bb.xmax, d.xmax) - std::max(bb.xmin, d.xmin)) *
+              std::max(0.0, std::min(bb.zmax, d.zmax) - std::max(bb.zmin, d.zmin));
+    }
+  } else {
+    area = (d.xmax - d.xmin) * (d.zmax - d.zmin);  // cells fill the domain
+  }
+  const double items = area / (h * h);
+  if (items <= cap) return;
+  const auto sec = root.subTable(section, false);
+  fail(root.ctx(), sec && sec->find(key) ? sec->find(key) : nullptr, section + "." + key,
+       fmt::format("{} cm gives about {:.3g} {}s, more than the {:.0e} hvi holds in memory "
+                   "(docs/scenes.md)",
+                   g6(h), items, what, cap),
+       section + "." + key + " >= " + g6(std::sqrt(area / cap)) + " cm, or a smaller " +
+           (scene.solver == SolverKind::Sph ? "body" : "domain"));
+}
+
 void checkResolution(const TableReader& root, const Scene& scene, const Sources& src) {
   std::string section, key, what;
   double h = 0.0;
@@ -61,6 +95,7 @@ void checkResolution(const TableReader& root, const Scene& scene, const Sources&
              " cm thick: it would get no " + what + " across",
          section + "." + key + " <= " + g6(thickness) + " cm");
   }
+  checkSize(root, scene, section, key, what, h);
 }
 
 void checkRiemann(const TableReader& root, const Scene& scene, const Sources& src, double tol) {
