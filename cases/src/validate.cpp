@@ -50,21 +50,10 @@ constexpr double kMaxCells = 5e7;
 
 void checkSize(const TableReader& root, const Scene& scene, const std::string& section,
                const std::string& key, const std::string& what, double h) {
-  const Domain& d = scene.domain;
-  double area = 0.0;
-  double cap = kMaxCells;
-  if (scene.solver == SolverKind::Sph) {
-    cap = kMaxParticles;  // particles fill the bodies: their boxes clipped to the domain
-    for (const Body& body : scene.bodies) {
-      const Box bb = boundingBox(body.shape);
-      area += std::max(0.0, std::min(bb.xmax, d.xmax) - std::max(bb.xmin, d.xmin)) *
-              std::max(0.0, std::min(bb.zmax, d.zmax) - std::max(bb.zmin, d.zmin));
-    }
-  } else {
-    area = (d.xmax - d.xmin) * (d.zmax - d.zmin);  // cells fill the domain
-  }
-  const double items = area / (h * h);
+  const double cap = scene.solver == SolverKind::Sph ? kMaxParticles : kMaxCells;
+  const double items = estimatedWorkItems(scene);
   if (items <= cap) return;
+  const double area = items * h * h;
   const auto sec = root.subTable(section, false);
   fail(root.ctx(), sec && sec->find(key) ? sec->find(key) : nullptr, section + "." + key,
        fmt::format("{} cm gives about {:.3g} {}s, more than the {:.0e} hvi holds in memory "
@@ -165,3 +154,23 @@ void validateScene(const TableReader& root, const Scene& scene, const Sources& s
 }
 
 }  // namespace hvi::cases::detail
+
+namespace hvi::cases {
+
+double estimatedWorkItems(const Scene& scene) {
+  const Domain& d = scene.domain;
+  if (scene.solver == SolverKind::Sph) {
+    double area = 0.0;
+    for (const Body& body : scene.bodies) {
+      const Box bb = boundingBox(body.shape);
+      area += std::max(0.0, std::min(bb.xmax, d.xmax) - std::max(bb.xmin, d.xmin)) *
+              std::max(0.0, std::min(bb.zmax, d.zmax) - std::max(bb.zmin, d.zmin));
+    }
+    return area / (scene.sph.spacing * scene.sph.spacing);
+  }
+  if (scene.solver == SolverKind::Tvd)
+    return (d.xmax - d.xmin) * (d.zmax - d.zmin) / (scene.tvd.cellSize * scene.tvd.cellSize);
+  return 0.0;
+}
+
+}  // namespace hvi::cases

@@ -18,24 +18,6 @@
 namespace hvi::app {
 namespace {
 
-//! Work items the solver would hold: SPH particles fill the bodies (their boxes, clipped to the
-//! domain), TVD cells fill the domain; the exact Riemann solver samples at most a few thousand.
-double estimatedItems(const cases::Scene& s) {
-  const auto& d = s.domain;
-  if (s.solver == cases::SolverKind::Sph) {
-    double area = 0.0;
-    for (const auto& b : s.bodies) {
-      const cases::Box bb = cases::boundingBox(b.shape);
-      area += std::max(0.0, std::min(bb.xmax, d.xmax) - std::max(bb.xmin, d.xmin)) *
-              std::max(0.0, std::min(bb.zmax, d.zmax) - std::max(bb.zmin, d.zmin));
-    }
-    return area / (s.sph.spacing * s.sph.spacing);
-  }
-  if (s.solver == cases::SolverKind::Tvd)
-    return (d.xmax - d.xmin) * (d.zmax - d.zmin) / (s.tvd.cellSize * s.tvd.cellSize);
-  return 0.0;
-}
-
 TEST(SceneFuzz, DamagedScenesRunOrGiveAClearError) {
   // One mutation each, so that most scenes stay valid enough to reach the solvers. Scenes whose
   // resolution was damaged into millions of items are accepted by the parser (under its memory
@@ -58,7 +40,7 @@ TEST(SceneFuzz, DamagedScenesRunOrGiveAClearError) {
       ++rejected;
       continue;
     }
-    if (estimatedItems(scene) > kMaxItems) {
+    if (cases::estimatedWorkItems(scene) > kMaxItems) {
       ++tooLarge;
       continue;
     }

@@ -151,4 +151,9 @@ struct Scene {
   [[nodiscard]] bool has(Effect e) const { return effects.count(e) != 0; }
 };
 
+//! Work items the scene's solver will hold, estimated before anything is built: SPH particles
+//! fill the bodies (their bounding boxes clipped to the domain, over spacing^2), TVD cells the
+//! domain; 0 for the exact Riemann solver. Validation caps it (docs/scenes.md).
+double estimatedWorkItems(const Scene& scene);
+
 }  // namespace hvi::cases
