@@ -83,6 +83,13 @@ void Stepper::Impl::deriveRates() {
   }
 }
 
+std::string Stepper::Impl::objectName(std::size_t i) const {
+  const int o = a.obj[i];
+  return (o >= 0 && o < static_cast<int>(cfg.objectNames.size()))
+             ? cfg.objectNames[static_cast<std::size_t>(o)]
+             : std::to_string(o);
+}
+
 void Stepper::Impl::checkState(const char* stage) const {
   const long nl = static_cast<long>(n);
   long bad = nl;
@@ -95,10 +102,7 @@ void Stepper::Impl::checkState(const char* stage) const {
   }
   if (bad == nl) return;
   const std::size_t i = static_cast<std::size_t>(bad);
-  const int o = a.obj[i];
-  const std::string obj = (o >= 0 && o < static_cast<int>(cfg.objectNames.size()))
-                              ? cfg.objectNames[static_cast<std::size_t>(o)]
-                              : std::to_string(o);
+  const std::string obj = objectName(i);
   throw SimulationError(fmt::format(
       "SPH {} at step {}, t = {} us: particle {} of object '{}' has x = {}, z = {} cm, "
       "v = ({}, {}) cm/us, rho = {} g/cm^3, e = {} cm^2/us^2, P = {} Mbar, m = {} g",
@@ -153,10 +157,7 @@ void Stepper::Impl::throwCollapse(double dt) const {
   bool byAcc = false;
   (void)particleTimeStep(worst, &byAcc);
   const std::size_t i = worst;
-  const int o = a.obj[i];
-  const std::string obj = (o >= 0 && o < static_cast<int>(cfg.objectNames.size()))
-                              ? cfg.objectNames[static_cast<std::size_t>(o)]
-                              : std::to_string(o);
+  const std::string obj = objectName(i);
   throw SimulationError(fmt::format(
       "SPH time step collapsed at step {}, t = {} us: dt = {:.3e} us (first step {:.3e} us), "
       "set by the {} of particle {} of object '{}' (material {}): x = {}, z = {} cm, "

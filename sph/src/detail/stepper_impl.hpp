@@ -1,5 +1,6 @@
 //! @file State of the SPH stepper (shared by the step driver and the checkpoint code).
 #pragma once
+#include <string>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -18,6 +19,7 @@ struct Stepper::Impl {
   void deriveWeights();      // rw, mu of the reals from their positions and masses
   void deriveRates();        // q, lam of the reals from P, rho, v
   void checkState(const char* stage) const;
+  std::string objectName(std::size_t i) const;  // of real particle i, for diagnostics
   void removeOutflow();
   double timeStep() const;   // CFL limit from the rates of the cached pass
   double particleTimeStep(std::size_t i, bool* byAcceleration = nullptr) const;
