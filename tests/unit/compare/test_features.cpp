@@ -123,8 +123,8 @@ TEST(Features, IntactShieldHasNoHoleAndNoCloud) {
 TEST(Features, ConfigFromSceneFollowsNamesThenOrder) {
   cases::Scene scene;
   scene.geometry = Geometry::Axisymmetric;
-  cases::Body plate{"plate", 0, cases::Rect{0.0, 4.0, 8.0, 8.155}, {}, 2.79, 0.0};
-  cases::Body ball{"ball", 0, cases::Disk{{0.0, 8.63}, 0.475}, {0.0, -0.67}, 2.79, 0.0};
+  cases::Body plate{"plate", 0, cases::Rect{0.0, 4.0, 8.0, 8.155}, {}, 2.79, 0.0, false, 0.0, {}};
+  cases::Body ball{"ball", 0, cases::Disk{{0.0, 8.63}, 0.475}, {0.0, -0.67}, 2.79, 0.0, false, 0.0, {}};
   scene.bodies = {ball, plate};
   FeatureConfig c = featureConfigFromScene(scene);
   EXPECT_EQ(c.striker, "ball");
