@@ -89,8 +89,9 @@ TEST(HardDenseStriker, Tvd) { expectStable(run("dense_striker", "tvd"), kTvd); }
 // interface treatment by a factor of at least 1.25 (order >= 0.3): a first-order error halves
 // (factor 2) once the interface length has converged, but the rod's lip and the aluminium sheet
 // along it are only resolved from 0.025 cm on, so the observed factors (1.5-1.6) sit between.
-// At 0.0125 cm this case used to stop at 0.52 us (negative density in the aluminium lip): an
-// aluminium cell with e < 0 hit Tillotson's pole at w = 0 (docs/eos.md).
+// At 0.0125 cm this case used to stop at 0.52 us (negative density in a near-vacuum aluminium
+// cell of the lip, rho = 0.01 g/cm^3, where Tillotson's pole at w = 0 lies at e = -7e-7); it
+// completes since e < 0 carries no thermal pressure (docs/eos.md).
 TEST(HardDenseStriker, TvdConvergesWithResolution) {
   std::vector<RunResult> runs;
   for (const char* dx : {"0.05", "0.025", "0.0125"}) {
