@@ -63,9 +63,10 @@ TEST(SceneFuzz, DamagedScenesRunOrGiveAClearError) {
     }
   }
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("[ fuzz ] %d damaged scenes: %d rejected with InputError, %d too large to build "
-              "here, %d built, %d stepped %d times, %d stopped with SimulationError, %.1f s\n",
-              kTrials, rejected, tooLarge, built, stepped, kSteps, failedRuns, s);
+  std::printf(
+      "[ fuzz ] %d damaged scenes: %d rejected with InputError, %d too large to build "
+      "here, %d built, %d stepped %d times, %d stopped with SimulationError, %.1f s\n",
+      kTrials, rejected, tooLarge, built, stepped, kSteps, failedRuns, s);
   RecordProperty("tried", kTrials);
   EXPECT_GT(stepped, kTrials / 10);  // the test does reach the solvers
 }
