@@ -48,10 +48,6 @@ int threadCount() {
 #endif
 }
 
-//! A time step this much smaller than the first one means the run has collapsed (a particle or
-//! cell driven to a singular state); going on would only burn time.
-constexpr double kDtCollapseFraction = 1e-6;
-
 class Run {
  public:
   Run(const RunOptions& opts, cases::Scene scene, SolverFactory factory)
@@ -78,7 +74,6 @@ class Run {
 
     Progress progress(scene_.tStart, scene_.tEnd);
     auto lastCheckpoint = std::chrono::steady_clock::now();
-    double dt0 = 0.0;
     long stepsThisRun = 0;
     const auto outputs = scene_.output.times;
     try {
@@ -87,12 +82,6 @@ class Run {
         const double dt = solver_->advance(tNext);
         ++stepsThisRun;
         record_.afterStep(*solver_, dt);
-        if (dt0 == 0.0 && solver_->time() < tNext) dt0 = dt;  // a step cut short by an output is not a CFL step
-        if (dt0 > 0.0 && dt < kDtCollapseFraction * dt0 && solver_->time() < tNext)
-          throw SimulationError(fmt::format(
-              "time step collapsed at step {}, t = {} us: dt = {:.3e} us < {:.0e} x the first "
-              "step {:.3e} us",
-              solver_->step(), solver_->time(), dt, kDtCollapseFraction, dt0));
         if (!opts_.quiet) progress.update(solver_->time(), solver_->step(), dt);
         if (solver_->time() >= tNext) {
           writeSnapshot("snap");

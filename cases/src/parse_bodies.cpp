@@ -1,7 +1,6 @@
 //! @file [[bodies]]: name, material, shape (disk / rect / polygon) and the initial state.
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <vector>
 
 #include "detail/parse.hpp"
@@ -98,22 +97,12 @@ std::size_t materialIndex(const TableReader& b, const Scene& scene) {
   b.fail("material", problem, join(defined));
 }
 
-// Lowest specific energy where the EOS is defined: an ideal gas has no negative energy;
-// Tillotson needs w = 1 + e / (e0 delta^2) > 0; compressed states at P = 0 lie below e = 0.
-double lowestEnergy(const eos::Eos& eos) {
-  if (std::holds_alternative<eos::IdealGas>(eos)) return 0.0;
-  // Tillotson's e is measured from the cold reference state; below it the EOS adds no thermal
-  // pressure (docs/eos.md), so a body cannot start there.
-  if (std::holds_alternative<eos::Tillotson>(eos)) return 0.0;
-  return -std::numeric_limits<double>::infinity();
-}
-
 // The initial specific energy: given, from a pressure through the EOS, or zero.
 double initialEnergy(const TableReader& b, const eos::Eos& eos, double rho) {
   if (b.has("pressure") && b.has("specific_energy"))
     b.fail("pressure", "give either pressure or specific_energy, not both",
            "pressure or specific_energy");
-  const double eMin = lowestEnergy(eos);
+  const double eMin = eos::lowestSpecificEnergy(eos);
   if (b.has("specific_energy")) {
     const double e = b.quantity("specific_energy", Dimension::SpecificEnergy);
     b.check(e >= eMin, "specific_energy",

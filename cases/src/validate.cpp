@@ -53,13 +53,12 @@ void checkSize(const TableReader& root, const Scene& scene, const std::string& s
   const double cap = scene.solver == SolverKind::Sph ? kMaxParticles : kMaxCells;
   const double items = estimatedWorkItems(scene);
   if (items <= cap) return;
-  const double area = items * h * h;
   const auto sec = root.subTable(section, false);
   fail(root.ctx(), sec && sec->find(key) ? sec->find(key) : nullptr, section + "." + key,
        fmt::format("{} cm gives about {:.3g} {}s, more than the {:.0e} hvi holds in memory "
                    "(docs/scenes.md)",
                    g6(h), items, what, cap),
-       section + "." + key + " >= " + g6(std::sqrt(area / cap)) + " cm, or a smaller " +
+       section + "." + key + " >= " + g6(h * std::sqrt(items / cap)) + " cm, or a smaller " +
            (scene.solver == SolverKind::Sph ? "body" : "domain"));
 }
 

@@ -1,5 +1,6 @@
 //! @file EOS presets and helpers common to every EOS.
 #include <cmath>
+#include <limits>
 #include <fmt/format.h>
 
 #include "hvi/common/error.hpp"
@@ -16,40 +17,31 @@ std::string kindName(const Eos& eos) {
   return std::visit(V{}, eos);
 }
 
+double lowestSpecificEnergy(const Eos& eos) {
+  if (std::holds_alternative<MieGruneisen>(eos)) return -std::numeric_limits<double>::infinity();
+  return 0.0;
+}
+
 namespace {
 
-// Lowest specific energy where the EOS is increasing in e, and whether it can carry tension.
-// Tillotson carries no thermal pressure below e = 0 (P(rho, e < 0) = P(rho, 0), tillotson.cpp),
-// so a pressure below its cold curve P(rho, 0) has no state.
-struct EnergyDomain {
-  double eMin;
-  bool tension;
-};
-EnergyDomain energyDomain(const Eos& eos, double rho) {
-  struct V {
-    double rho;
-    EnergyDomain operator()(const Tillotson& t) const {
-      return {0.0, !t.tensionCutoff};
-    }
-    EnergyDomain operator()(const IdealGas&) const { return {0.0, false}; }
-    EnergyDomain operator()(const MieGruneisen& m) const { return {-1e300, !m.tensionCutoff}; }
-  };
-  return std::visit(V{rho}, eos);
+bool carriesTension(const Eos& eos) {
+  if (const auto* t = std::get_if<Tillotson>(&eos)) return !t->tensionCutoff;
+  if (const auto* m = std::get_if<MieGruneisen>(&eos)) return !m->tensionCutoff;
+  return false;
 }
 
 }  // namespace
 
 double energyForPressure(const Eos& eos, double rho, double p) {
-  const EnergyDomain dom = energyDomain(eos, rho);
-  if (!(rho > 0.0) || !std::isfinite(p) || (p < 0.0 && !dom.tension)) {
+  if (!(rho > 0.0) || !std::isfinite(p) || (p < 0.0 && !carriesTension(eos))) {
     throw InputError(fmt::format(
         "energyForPressure: no {} state at rho {} with P = {} (needs rho > 0, and P >= 0 for a "
         "material that carries no tension)",
         kindName(eos), rho, p));
   }
-  // P is increasing in e on (eMin, inf) for every EOS here (dP/de > 0 there; 0 only where the
-  // cut-off holds P at 0), so bracket inside that interval, then bisect with Newton steps that
-  // stay inside the bracket.
+  // P is increasing in e above lowestSpecificEnergy for every EOS here (dP/de > 0 there; 0 only
+  // where the cut-off holds P at 0), so bracket there, then bisect with Newton steps that stay
+  // inside the bracket.
   auto f = [&](double e) { return pressure(eos, rho, e) - p; };
   auto noState = [&] {
     return InputError(fmt::format("energyForPressure: no {} state at rho {} reaches P = {}",
@@ -57,14 +49,13 @@ double energyForPressure(const Eos& eos, double rho, double p) {
   };
   double lo = 0.0, hi = 1.0;
   if (f(lo) > 0.0) {
-    if (dom.eMin == 0.0) throw noState();  // below the cold curve
-    // Walk down: halving the gap to eMin (where the Tillotson formula falls to -inf), or
-    // doubling outwards when the formula has no lower bound in e.
-    const bool bounded = dom.eMin > -1e300;
+    // Below e = 0 only Mie-Gruneisen has states (its reference curve is not e = 0): walk
+    // outwards, doubling. Tillotson and the ideal gas have none (below the cold curve).
+    if (lowestSpecificEnergy(eos) == 0.0) throw noState();
     for (int k = 0; f(lo) > 0.0; ++k) {
       if (k > 1100) throw noState();
       hi = lo;
-      lo = bounded ? dom.eMin * (1.0 - std::ldexp(1.0, -k - 1)) : -std::ldexp(1.0, k);
+      lo = -std::ldexp(1.0, k);
     }
   } else {
     while (f(hi) < 0.0) {

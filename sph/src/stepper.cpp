@@ -14,7 +14,6 @@
 namespace hvi::sph {
 namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
-constexpr double kDtCollapseFraction = 1e-6;
 }
 
 Stepper::Impl::Impl(const ParticleSystem& ps, std::vector<eos::Eos> mats, StepperConfig config)
@@ -215,8 +214,7 @@ double Stepper::step(double tStop) {
   s.passCached(a, s.n, s.list, s.cfg.visc, s.axis.get(), ratesN);
   double dt = s.timeStep();
   if (s.dt0 == 0.0 && dt > 0.0 && std::isfinite(dt)) s.dt0 = dt;
-  // A step a million times below the first means a particle driven to a singular state
-  // (the same threshold as the TVD solver and the driver); stop and name it.
+  // A collapsed step (common/solver.hpp): stop and name the particle.
   if (!(dt > kDtCollapseFraction * s.dt0)) s.throwCollapse(dt);
   // The last step lands on tStop exactly (an output time).
   if (s.t + dt >= tStop) dt = tStop - s.t;

@@ -203,7 +203,7 @@ double TvdSolver::advance(double tStop) {
   const double smax = signalSpeedPass(markersOn_, &worst);
   double dt = smax > 0.0 ? params_.cfl * grid_.dx / smax : tStop - time_;
   if (dt0_ == 0.0) dt0_ = dt;
-  if (!(dt >= 1e-6 * dt0_)) {
+  if (!(dt >= kDtCollapseFraction * dt0_)) {
     const auto c = static_cast<std::size_t>(std::max(worst, 0L));
     throw SimulationError(fmt::format(
         "tvd: step {}, t = {:.6g} us: time step collapsed to {:.3g} us (first step {:.3g} us); "

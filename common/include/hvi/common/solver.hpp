@@ -17,6 +17,11 @@ struct Totals {
   [[nodiscard]] double energy() const { return kinetic + internal; }
 };
 
+//! A step this much smaller than a solver's first (CFL) step means the run has collapsed: an
+//! item driven to a singular state. Each solver checks it in advance() and names the particle or
+//! cell that set the step; going on would only burn time.
+inline constexpr double kDtCollapseFraction = 1e-6;
+
 //! A time-marching solver. Calls are per step, never per particle or cell, so this virtual
 //! interface costs nothing measurable.
 class Solver {
