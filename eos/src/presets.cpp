@@ -18,8 +18,8 @@ std::string kindName(const Eos& eos) {
 }
 
 double lowestSpecificEnergy(const Eos& eos) {
-  if (std::holds_alternative<MieGruneisen>(eos)) return -std::numeric_limits<double>::infinity();
-  return 0.0;
+  if (std::holds_alternative<IdealGas>(eos)) return 0.0;
+  return -std::numeric_limits<double>::infinity();
 }
 
 namespace {
@@ -49,8 +49,8 @@ double energyForPressure(const Eos& eos, double rho, double p) {
   };
   double lo = 0.0, hi = 1.0;
   if (f(lo) > 0.0) {
-    // Below e = 0 only Mie-Gruneisen has states (its reference curve is not e = 0): walk
-    // outwards, doubling. Tillotson and the ideal gas have none (below the cold curve).
+    // Below e = 0: the ideal gas has no states; Tillotson (linear below its cold reference) and
+    // Mie-Gruneisen have no lower bound, so walk outwards, doubling.
     if (lowestSpecificEnergy(eos) == 0.0) throw noState();
     for (int k = 0; f(lo) > 0.0; ++k) {
       if (k > 1100) throw noState();

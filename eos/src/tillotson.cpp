@@ -13,21 +13,27 @@ struct PD {  // pressure and its partial derivatives
 
 // Compressed / cold branch: Pc = (a + b/w) rho e + A mu + B mu^2, w = 1 + e/(e0 delta^2).
 // The thermal term is fitted for e >= 0 (the reference state rho0, e = 0 is the cold, unstressed
-// solid). A negative e is a numerical undershoot below that reference, and there the formula has
-// a pole at w = 0, only e0 delta^2 below zero: 0.004 cm^2/us^2 at delta = 0.28, which SPH's
-// symmetric energy equation does reach (docs/eos.md). So e < 0 carries no thermal pressure:
-// P(rho, e < 0) = P(rho, 0), continuous in e, with dP/de = 0. The state keeps its e (energy
-// stays conserved); only the pressure it exerts is the cold one.
-PD compressed(const Tillotson& t, double rho, double eIn) {
-  const double e = std::max(eIn, 0.0);
+// solid). Below it the formula has a pole at w = 0, only e0 delta^2 below zero (-0.0038 cm^2/us^2
+// at rho = 0.77), which SPH's symmetric energy equation does reach (docs/eos.md). For e < 0 the
+// thermal coefficient is frozen at its e = 0 value, a + b: P = (a + b) rho e + A mu + B mu^2, the
+// tangent plane of the formula at e = 0. P and both derivatives are continuous there, so the
+// round-off values of e around 0 in cold material see no kink, and there is no pole.
+PD compressed(const Tillotson& t, double rho, double e) {
   const double delta = rho / t.rho0, mu = delta - 1.0;
+  PD r;
+  if (e < 0.0) {
+    const double g0 = t.a + t.b;
+    r.p = g0 * rho * e + t.A * mu + t.B * mu * mu;
+    r.pE = g0 * rho;
+    r.pRho = g0 * e + (t.A + 2.0 * t.B * mu) / t.rho0;
+    return r;
+  }
   const double w = 1.0 + e / (t.e0 * delta * delta);
   const double dwdE = 1.0 / (t.e0 * delta * delta);
   const double dwdRho = -2.0 * e / (t.e0 * delta * delta * rho);
   const double g = t.a + t.b / w;  // Gruneisen-like coefficient
-  PD r;
   r.p = g * rho * e + t.A * mu + t.B * mu * mu;
-  r.pE = eIn > 0.0 ? g * rho - t.b * rho * e * dwdE / (w * w) : 0.0;
+  r.pE = g * rho - t.b * rho * e * dwdE / (w * w);
   r.pRho = g * e - t.b * rho * e * dwdRho / (w * w) + (t.A + 2.0 * t.B * mu) / t.rho0;
   return r;
 }

@@ -27,10 +27,10 @@ struct Point {
 // expanded branches rho >= 1.6 keeps exp(-alpha z^2) >= 0.06, so every term of P_H is exercised;
 // the low densities check the vapour limit P -> a rho e.
 const Point kPoints[] = {
-    {3.0, 0.002, Tillotson::Region::Compressed},       {3.5, 0.05, Tillotson::Region::Compressed},
+    {3.0, 0.0, Tillotson::Region::Compressed},       {3.5, 0.05, Tillotson::Region::Compressed},
     {4.5, 0.3, Tillotson::Region::Compressed},       {6.0, 2.0, Tillotson::Region::Compressed},
     {2.8, 0.2, Tillotson::Region::Compressed},       {2.5, 0.01, Tillotson::Region::ColdExpanded},
-    {2.0, 0.025, Tillotson::Region::ColdExpanded},   {1.2, 0.002, Tillotson::Region::ColdExpanded},
+    {2.0, 0.025, Tillotson::Region::ColdExpanded},   {1.2, 0.0, Tillotson::Region::ColdExpanded},
     {2.5, 0.05, Tillotson::Region::Blend},           {2.0, 0.1, Tillotson::Region::Blend},
     {1.0, 0.08, Tillotson::Region::Blend},           {0.4, 0.14, Tillotson::Region::Blend},
     {2.5, 0.2, Tillotson::Region::HotExpanded},      {2.0, 0.3, Tillotson::Region::HotExpanded},
@@ -137,32 +137,40 @@ TEST(Tillotson, KnownValues) {
   EXPECT_EQ(kindName(Eos{al}), "tillotson");
 }
 
-TEST(Tillotson, NegativeEnergyCarriesNoThermalPressure) {
-  // e < 0 is an undershoot below the cold reference state; the thermal term's pole at
-  // w = 1 + e/(e0 delta^2) = 0 lies only e0 delta^2 below zero in expanded states. The state
-  // SPH reached in variant 1 (rho 0.77, e -0.0038: w = 0.003) gave P = 280 Mbar and a time-step
-  // collapse. Now P(rho, e < 0) = P(rho, 0) exactly, dP/de = 0, and P is continuous at e = 0.
+TEST(Tillotson, BelowTheColdReferenceIsTheTangentPlaneWithoutPole) {
+  // e < 0 is an undershoot below the cold reference state. The formula's thermal term has a pole
+  // at w = 1 + e/(e0 delta^2) = 0, only e0 delta^2 below zero in expanded states: the state SPH
+  // reached in the coarse variant 1 (rho 0.77, e -0.0038: w = 0.003) gave P = 278 Mbar and a
+  // time-step collapse. Below e = 0 the thermal coefficient is frozen at a + b:
+  // P = (a + b) rho e + A mu + B mu^2, finite for every e, with P, dP/de and dP/drho continuous at
+  // e = 0 (round-off values of e around 0 see no kink).
   Tillotson noCut = al;
   noCut.tensionCutoff = false;
+  const double g0 = al.a + al.b;
   for (double rho : {0.77, 1.5, 2.79, 3.5, 6.0}) {
-    const double cold = noCut.pressure(rho, 0.0);
-    EXPECT_DOUBLE_EQ(cold, noCut.A * (rho / al.rho0 - 1) + noCut.B * std::pow(rho / al.rho0 - 1, 2));
+    const double mu = rho / al.rho0 - 1.0;
+    const double cold = al.A * mu + al.B * mu * mu;
     for (double e : {-1e-12, -0.0038, -0.05 * std::pow(rho / al.rho0, 2), -1.0}) {
       const EosState s = noCut.state(rho, e);
-      EXPECT_EQ(s.pressure, cold) << "rho " << rho << " e " << e;
-      EXPECT_EQ(s.dPdE, 0.0);
+      EXPECT_NEAR(s.pressure, cold + g0 * rho * e, 1e-15 * (std::abs(cold) + g0 * rho))
+          << "rho " << rho << " e " << e;
+      EXPECT_DOUBLE_EQ(s.dPdE, g0 * rho);
       EXPECT_TRUE(std::isfinite(s.soundSpeed));
-      // With the cut-off, expanded cold states are spalled (P = 0), compressed ones keep P.
-      EXPECT_EQ(al.pressure(rho, e), std::max(cold, 0.0));
     }
-    // Continuous at e = 0: a step of 1e-12 above moves P by (a + b) rho 1e-12 at most.
-    EXPECT_NEAR(noCut.pressure(rho, 1e-12), cold, (al.a + al.b) * rho * 1e-12 * 1.01 + 1e-15);
+    // C1 at e = 0: the formula's value and derivatives there equal the plane's.
+    const EosState at0 = noCut.state(rho, 0.0), below = noCut.state(rho, -1e-300);
+    EXPECT_NEAR(at0.pressure, below.pressure, 1e-15 * (std::abs(cold) + al.A));
+    EXPECT_DOUBLE_EQ(at0.dPdE, below.dPdE);
+    EXPECT_DOUBLE_EQ(at0.dPdRho, below.dPdRho);
   }
+  // The variant-1 particle: tension in the formula, so spalled under the cut-off.
+  EXPECT_LT(noCut.pressure(0.77, -0.0038), 0.0);
+  EXPECT_EQ(al.pressure(0.77, -0.0038), 0.0);
 }
 
 TEST(Tillotson, EnergyForPressureRoundTrip) {
-  // Newton/bisection to ~1e-15: P(rho, e(p)) = p to 1e-12 relative, in every region, and with
-  // no cut-off in tension.
+  // Newton/bisection to ~1e-15: P(rho, e(p)) = p to 1e-12 relative, in every region, including
+  // compressed states below the cold curve (e < 0) and with no cut-off in tension.
   const Eos eos{al};
   for (const Point& p : kPoints) {
     const double target = al.pressure(p.rho, p.e);
@@ -171,8 +179,9 @@ TEST(Tillotson, EnergyForPressureRoundTrip) {
     EXPECT_NEAR(al.pressure(p.rho, e) / target, 1.0, 1e-12) << "rho " << p.rho << " e " << p.e;
     EXPECT_NEAR(e, p.e, 1e-10 * std::max(1.0, std::abs(p.e)));
   }
-  // Below the cold curve P(3.5, 0) = 0.233 Mbar no state exists: e < 0 adds no thermal pressure.
-  EXPECT_THROW((void)energyForPressure(eos, 3.5, 0.1), InputError);
+  const double below = energyForPressure(eos, 3.5, 0.1);  // P(3.5, 0) = 0.233 > 0.1
+  EXPECT_LT(below, 0.0);
+  EXPECT_NEAR(al.pressure(3.5, below) / 0.1, 1.0, 1e-12);
   Tillotson noCut = al;
   noCut.tensionCutoff = false;
   const double tens = energyForPressure(Eos{noCut}, 2.5, -0.05);

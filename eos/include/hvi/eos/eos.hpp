@@ -30,15 +30,15 @@ inline double referenceDensity(const Eos& eos) {
 //! "tillotson", "ideal_gas" or "mie_gruneisen".
 std::string kindName(const Eos& eos);
 
-//! Lowest specific energy a state can have: 0 for Tillotson (its e is measured from the cold
-//! reference state and e < 0 adds no pressure, docs/eos.md) and the ideal gas; unbounded for
-//! Mie-Gruneisen (energies below its reference Hugoniot are states too).
+//! Lowest specific energy a state can have: 0 for the ideal gas; unbounded for Mie-Gruneisen
+//! (energies below its reference curve) and Tillotson (linear in e below its cold reference
+//! state, docs/eos.md).
 double lowestSpecificEnergy(const Eos& eos);
 
 //! Specific energy e such that P(rho, e) = p, by bracketed Newton iteration (monotone in e for
 //! every EOS here where dP/de > 0). Used to set up initial states given a pressure.
-//! The bracket starts at lowestSpecificEnergy: a Tillotson pressure below the cold curve
-//! P(rho, 0) has no state. With a cut-off, p = 0 returns the lowest e with P > 0 beyond it.
+//! Compressed Tillotson states below the cold curve get e < 0. With a cut-off, p = 0 returns the
+//! lowest e with P > 0 beyond it.
 //! Throws hvi::InputError for p < 0 in a material that carries no tension, and where no state
 //! reaches p.
 double energyForPressure(const Eos& eos, double rho, double p);
