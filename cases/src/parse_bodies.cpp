@@ -105,7 +105,8 @@ double initialEnergy(const TableReader& b, const eos::Eos& eos, double rho) {
   const double eMin = eos::lowestSpecificEnergy(eos);
   if (b.has("specific_energy")) {
     const double e = b.quantity("specific_energy", Dimension::SpecificEnergy);
-    b.check(e >= eMin, "specific_energy", "below where the " + eos::kindName(eos) + " EOS is defined",
+    b.check(e >= eMin, "specific_energy",
+            "below where the " + eos::kindName(eos) + " EOS is defined",
             "a specific energy >= " + shortNumber(eMin) + " cm^2/us^2");
     return e;
   }
