@@ -62,10 +62,22 @@ bool makeSimpleCounterClockwise(Polygon& poly, std::string& why) {
         return false;
       }
     }
+  // Relative to the first vertex: far from the origin the sum of absolute cross products would
+  // lose the area of a small polygon to cancellation.
   double twiceArea = 0.0;
-  for (std::size_t i = 0, j = n - 1; i < n; j = i++) twiceArea += cross(v[j], v[i]);
-  if (!(std::abs(twiceArea) > 0.0) || !std::isfinite(twiceArea)) {
-    why = "the polygon has zero area";
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) twiceArea += cross(v[j] - v[0], v[i] - v[0]);
+  double xmin = v[0].x, xmax = v[0].x, zmin = v[0].z, zmax = v[0].z;
+  for (const Vec2 p : v) {
+    xmin = std::min(xmin, p.x), xmax = std::max(xmax, p.x);
+    zmin = std::min(zmin, p.z), zmax = std::max(zmax, p.z);
+  }
+  const double diag2 = (xmax - xmin) * (xmax - xmin) + (zmax - zmin) * (zmax - zmin);
+  // Collinear vertices give round-off areas (~1e-16 of diag^2), which the exact tests above do not
+  // see: orientation() of nearly collinear points is +-1, not 0. A polygon narrower than 1e-9 of
+  // its size cannot be resolved by either solver (the memory caps allow ~7000 cells a side), so
+  // it is refused here rather than failing at set-up ("holds no particle", no marker area).
+  if (!std::isfinite(twiceArea) || !(std::abs(twiceArea) > 1e-9 * diag2)) {
+    why = "the polygon has zero area: its vertices are (nearly) collinear";
     return false;
   }
   if (twiceArea < 0.0) std::reverse(v.begin(), v.end());

@@ -86,6 +86,73 @@ void checkResolution(const TableReader& root, const Scene& scene, const Sources&
   checkSize(root, scene, section, key, what, h);
 }
 
+// Whether the SPH fill (sph/src/fill.cpp, fillBodies) puts a particle into bodies[b]: the same
+// lattice (square, or hexagonal with odd rows shifted), the same site positions and the same
+// rule that the first body in scene order owns a site two bodies share. The thickness check
+// passes bodies whose bounding box is wide enough but that still catch no site (a thin diagonal
+// strip, a small disk between rows); without this, `check` accepts what `run` refuses.
+// Stops at the first site; the sites scanned are at most the bounding box over spacing^2, which
+// checkSize has capped.
+bool holdsLatticeSite(const Scene& scene, std::size_t b) {
+  const SphParams& sp = scene.sph;
+  double ax = sp.spacing, az = sp.spacing;
+  const bool shiftOdd = sp.lattice == Lattice::Hexagonal;
+  if (shiftOdd) {
+    ax = sp.spacing * std::sqrt(2.0 / std::sqrt(3.0));
+    az = 0.5 * std::sqrt(3.0) * ax;
+  }
+  const Domain& dom = scene.domain;
+  const Box box = boundingBox(scene.bodies[b].shape);
+  const double zlo = std::max(box.zmin, dom.zmin), zhi = std::min(box.zmax, dom.zmax);
+  const double xlo = std::max(box.xmin, dom.xmin), xhi = std::min(box.xmax, dom.xmax);
+  const long k0 = std::max(0L, static_cast<long>(std::floor((zlo - dom.zmin) / az - 0.5)));
+  const long k1 = static_cast<long>(std::ceil((zhi - dom.zmin) / az));
+  for (long k = k0; k <= k1; ++k) {
+    const double z = dom.zmin + (static_cast<double>(k) + 0.5) * az;
+    if (z < zlo || z > zhi || z > dom.zmax) continue;
+    const double shift = (shiftOdd && (k & 1)) ? 0.5 : 0.0;
+    const long i0 = std::max(0L, static_cast<long>(std::floor((xlo - dom.xmin) / ax - 0.5 - shift)));
+    const long i1 = static_cast<long>(std::ceil((xhi - dom.xmin) / ax));
+    for (long i = i0; i <= i1; ++i) {
+      const double x = dom.xmin + (static_cast<double>(i) + 0.5 + shift) * ax;
+      if (x < xlo || x > xhi || x > dom.xmax) continue;
+      const Vec2 pt{x, z};
+      if (!contains(scene.bodies[b].shape, pt)) continue;
+      bool claimed = false;
+      for (std::size_t o = 0; o < b && !claimed; ++o) claimed = contains(scene.bodies[o].shape, pt);
+      if (!claimed) return true;
+    }
+  }
+  return false;
+}
+
+void checkSphFill(const TableReader& root, const Scene& scene, const Sources& src) {
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    if (holdsLatticeSite(scene, i)) continue;
+    fail(root.ctx(), src.bodies[i], "bodies[" + std::to_string(i) + "]",
+         "\"" + scene.bodies[i].name + "\" holds no SPH particle: no site of the " +
+             g6(scene.sph.spacing) + " cm particle lattice lies inside it",
+         "a smaller sph.spacing, or a larger body");
+  }
+}
+
+// Without marker lines the TVD solver keeps one material (its cells hold no material index).
+void checkTvdMaterials(const TableReader& root, const Scene& scene, const Sources& src) {
+  if (scene.has(Effect::MaterialInterfaces)) return;
+  for (std::size_t i = 1; i < scene.bodies.size(); ++i) {
+    if (scene.bodies[i].material == scene.bodies[0].material) continue;
+    const auto& mats = scene.materials;
+    const toml::node* where = src.bodies[i]->get("material");
+    fail(root.ctx(), where ? where : src.bodies[i], "bodies[" + std::to_string(i) + "].material",
+         "is \"" + mats[static_cast<std::size_t>(scene.bodies[i].material)].name + "\" but " +
+             bodyLabel(scene, 0) + " is \"" +
+             mats[static_cast<std::size_t>(scene.bodies[0].material)].name +
+             "\": the TVD solver needs the effect \"material_interfaces\" (marker lines) for "
+             "several materials",
+         "effects = [..., \"material_interfaces\"], or one material for every body");
+  }
+}
+
 void checkRiemann(const TableReader& root, const Scene& scene, const Sources& src, double tol) {
   const std::string need = "planar geometry and exactly two rect bodies meeting at x = interface";
   if (scene.geometry != Geometry::Planar)
@@ -121,6 +188,52 @@ void checkRiemann(const TableReader& root, const Scene& scene, const Sources& sr
   }
 }
 
+// A step dt at time t is kept only to within ulp(t) (t + dt rounds to a double): when dt falls
+// below half an ulp, t stops advancing and the run spins (time.start = 1e20 us: ulp = 16384 us).
+// The first step is estimated before anything is built, as cfl h / max(|v| + c) over the bodies'
+// initial states (h: the SPH smoothing length or the TVD cell). Impacts shorten the step as they
+// compress and heat, typically 10 to 100 fold, so the estimate must exceed ulp(t) by a wide
+// margin: 2^20 ulps keeps each step exact to 1e-6 and still advancing after a 1e6-fold drop.
+// Shipped scenes end by 7.2 us; the tightest bound among them (noh_planar) is 4e6 us.
+constexpr double kMinStepUlps = 1048576.0;
+
+void checkTimeResolution(const TableReader& root, const Scene& scene) {
+  double h = 0.0, cfl = 0.0;
+  if (scene.solver == SolverKind::Sph) {
+    h = scene.sph.hFactor * scene.sph.spacing, cfl = scene.sph.cfl;
+  } else if (scene.solver == SolverKind::Tvd) {
+    h = scene.tvd.cellSize, cfl = scene.tvd.cfl;
+  } else {
+    return;  // the exact solution goes from output time to output time in one step
+  }
+  double speed = 0.0;
+  for (const Body& b : scene.bodies) {
+    const Material& m = scene.materials[static_cast<std::size_t>(b.material)];
+    const double rho = b.density > 0.0 ? b.density : m.rho0();
+    const double c = eos::state(m.eos, rho, b.specificEnergy).soundSpeed;
+    const double v = b.radial ? std::abs(b.radialSpeed) : norm(b.velocity);
+    if (std::isfinite(c + v)) speed = std::max(speed, c + v);
+  }
+  if (!(speed > 0.0)) return;  // nothing moves or sounds: the solvers step to the output times
+  const double dt = cfl * h / speed;
+  const bool startIsLarger = std::abs(scene.tStart) >= std::abs(scene.tEnd);
+  const double t = startIsLarger ? std::abs(scene.tStart) : std::abs(scene.tEnd);
+  const double ulp = std::nextafter(t, HUGE_VAL) - t;
+  if (dt >= kMinStepUlps * ulp) return;
+  // The largest |t| whose ulp is dt / kMinStepUlps (ulp(t) <= 2^-52 t).
+  const double tMax = dt / kMinStepUlps / std::ldexp(1.0, -52);
+  const std::string key = startIsLarger ? "start" : "end";
+  const auto sec = root.subTable("time", false);
+  fail(root.ctx(), sec && sec->find(key) ? sec->find(key) : nullptr, "time." + key,
+       fmt::format("at t = {} us doubles are {} us apart, while the first time step is about "
+                   "{} us (cfl h / (|v| + c) of the initial state): the steps would be lost to "
+                   "round-off and t would not advance",
+                   g6(t), g6(ulp), g6(dt)),
+       fmt::format("|time.start| and |time.end| below {} us at this resolution (shift the times "
+                   "towards 0)",
+                   g6(tMax)));
+}
+
 }  // namespace
 
 void validateScene(const TableReader& root, const Scene& scene, const Sources& src) {
@@ -149,6 +262,9 @@ void validateScene(const TableReader& root, const Scene& scene, const Sources& s
              "\"" + scene.bodies[j].name + "\" overlaps " + bodyLabel(scene, i),
              "bodies that touch but do not overlap");
   checkResolution(root, scene, src);
+  if (scene.solver == SolverKind::Sph) checkSphFill(root, scene, src);
+  if (scene.solver == SolverKind::Tvd) checkTvdMaterials(root, scene, src);
+  checkTimeResolution(root, scene);
   if (scene.solver == SolverKind::Riemann) checkRiemann(root, scene, src, tol);
 }
 
@@ -169,7 +285,7 @@ double estimatedWorkItems(const Scene& scene) {
   }
   if (scene.solver == SolverKind::Tvd)
     return (d.xmax - d.xmin) * (d.zmax - d.zmin) / (scene.tvd.cellSize * scene.tvd.cellSize);
-  return 0.0;
+  return static_cast<double>(scene.riemann.cells);
 }
 
 }  // namespace hvi::cases

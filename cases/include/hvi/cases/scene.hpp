@@ -153,7 +153,7 @@ struct Scene {
 
 //! Work items the scene's solver will hold, estimated before anything is built: SPH particles
 //! fill the bodies (their bounding boxes clipped to the domain, over spacing^2), TVD cells the
-//! domain; 0 for the exact Riemann solver. Validation caps it (docs/scenes.md).
+//! domain, the exact Riemann solver its riemann.cells. Validation caps it (docs/scenes.md).
 double estimatedWorkItems(const Scene& scene);
 
 }  // namespace hvi::cases
