@@ -1,7 +1,6 @@
 //! @file Every shipped scene loads, matches CASES.md, and round-trips through toToml exactly.
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 
 #include "hvi/cases/load.hpp"
@@ -167,11 +166,9 @@ TEST(SceneShipped, AllLoadAndRoundTripExactly) {
   ASSERT_GE(files.size(), 13u);
   for (const auto& f : files) {
     SCOPED_TRACE(f.filename().string());
-    const auto t0 = std::chrono::steady_clock::now();
+    // No wall-clock bound: on shared cores it fails for the machine's load, not the parser's
+    // work (a hang is caught by the ctest timeout).
     const Scene s = loadScene(f);
-    const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    EXPECT_LT(ms, 500.0);  // parsing is bookkeeping: even the overlap sampling is ~1e5 operations
     EXPECT_EQ(s.path, f.string());
     const std::string resolved = toToml(s);
     const Scene back = parseScene(resolved, "resolved.toml");
