@@ -172,8 +172,25 @@ bool hasLink(hid_t loc, const char* path) {
   return r > 0;
 }
 
+// Object headers carry access/modification/change/birth times by default: two runs that write
+// the same numbers would give files differing in those bytes. Nothing reads them.
+namespace {
+Id datasetCreation() {
+  Id dcpl(check(H5Pcreate(H5P_DATASET_CREATE), "H5Pcreate"), H5Pclose);
+  checkStatus(H5Pset_obj_track_times(dcpl, false), "H5Pset_obj_track_times");
+  return dcpl;
+}
+}  // namespace
+
+Id fileCreationWithoutTimes() {
+  Id fcpl(check(H5Pcreate(H5P_FILE_CREATE), "H5Pcreate"), H5Pclose);
+  checkStatus(H5Pset_obj_track_times(fcpl, false), "H5Pset_obj_track_times");
+  return fcpl;
+}
+
 Id createGroup(hid_t loc, const char* name) {
   Id gcpl(check(H5Pcreate(H5P_GROUP_CREATE), "H5Pcreate"), H5Pclose);
+  checkStatus(H5Pset_obj_track_times(gcpl, false), "H5Pset_obj_track_times");
   checkStatus(H5Pset_link_creation_order(gcpl, H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED),
               "H5Pset_link_creation_order");
   return {check(H5Gcreate2(loc, name, H5P_DEFAULT, gcpl, H5P_DEFAULT),
@@ -209,7 +226,8 @@ std::vector<std::string> memberNames(hid_t group) {
 
 Id writeDoubles(hid_t loc, const char* name, const std::vector<hsize_t>& dims, const double* data) {
   Id space = simpleSpace(dims);
-  Id ds(check(H5Dcreate2(loc, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+  Id dcpl = datasetCreation();
+  Id ds(check(H5Dcreate2(loc, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT),
               fmt::format("creating dataset '{}'", name)),
         H5Dclose);
   hsize_t total = 1;
@@ -246,7 +264,8 @@ std::vector<double> readDoubles(hid_t dataset) {
 void writeStrings(hid_t loc, const char* name, const std::vector<std::string>& values) {
   Id type = utf8StringType();
   Id space = simpleSpace({values.size()});
-  Id ds(check(H5Dcreate2(loc, name, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+  Id dcpl = datasetCreation();
+  Id ds(check(H5Dcreate2(loc, name, type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT),
               fmt::format("creating dataset '{}'", name)),
         H5Dclose);
   std::vector<const char*> ptrs;
@@ -279,7 +298,8 @@ std::vector<std::string> readStrings(hid_t loc, const char* name) {
 void writeString(hid_t loc, const char* name, const std::string& value) {
   Id type = utf8StringType();
   Id space = scalarSpace();
-  Id ds(check(H5Dcreate2(loc, name, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+  Id dcpl = datasetCreation();
+  Id ds(check(H5Dcreate2(loc, name, type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT),
               fmt::format("creating dataset '{}'", name)),
         H5Dclose);
   const char* p = value.c_str();

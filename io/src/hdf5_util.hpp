@@ -86,6 +86,9 @@ long long readIntAttribute(hid_t obj, const char* name);
 // Links and datasets.
 bool hasLink(hid_t loc, const char* path);
 //! A group whose members are listed in creation order (so fields keep their order).
+//! A file creation property list without object time stamps (for the root group): identical
+//! snapshots must be identical files (issue 11), and HDF5 by default stamps every object.
+Id fileCreationWithoutTimes();
 Id createGroup(hid_t loc, const char* name);
 Id openGroup(hid_t loc, const char* name);
 //! Member names in creation order when the group tracks it, else in name order.

@@ -49,7 +49,8 @@ void writeMarkers(hid_t file, const Snapshot& snap) {
 }
 
 void writeFile(const fs::path& path, const Snapshot& snap, const std::string& sceneToml) {
-  h5::Id file(h5::check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
+  h5::Id fcpl = h5::fileCreationWithoutTimes();
+  h5::Id file(h5::check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl, H5P_DEFAULT),
                         "creating the file"),
               H5Fclose);
   h5::writeAttribute(file, "format", std::string(hdf5Format));

@@ -32,12 +32,20 @@ namespace {
 // The simulation plane (x or r, z) is laid onto VTK's (x, y) so that ParaView's default view
 // (looking down -z at the x-y plane) shows it without rotating the camera.
 
+//! ParaView titles its colour legend with the array name, and has no other place for a unit:
+//! "density [g/cm^3]". Dimensionless fields (unit "1": material, object) keep the bare name, so
+//! the marker lines' "material" array and the grid's are the same array to ParaView.
+std::string vtkArrayName(const Field& f) {
+  if (f.unit.empty() || f.unit == "1") return f.name;
+  return f.name + " [" + f.unit + "]";
+}
+
 vtkNew<vtkDoubleArray> toVtkArray(const Field& f, long count) {
   // ParaView treats a 3-component array as a vector (glyphs, stream lines); a 2-component one
   // would not be, so 2-vectors are padded with a zero third component.
   const int c = f.components == 2 ? 3 : f.components;
   vtkNew<vtkDoubleArray> a;
-  a->SetName(f.name.c_str());
+  a->SetName(vtkArrayName(f).c_str());
   a->SetNumberOfComponents(c);
   a->SetNumberOfTuples(count);
   double* out = a->GetPointer(0);
@@ -139,11 +147,31 @@ void writeGrid(const fs::path& file, const Snapshot& snap) {
   writeXml<vtkXMLImageDataWriter>(file, img);
 }
 
+//! The material of each object, read off the snapshot's cells (the TVD grid carries both
+//! "object" and "material"); -1 where an object owns no cell (it left the grid).
+std::vector<int> objectMaterials(const Snapshot& snap) {
+  std::vector<int> mat(snap.objectNames.size(), -1);
+  const Field* obj = snap.find("object");
+  const Field* m = snap.find("material");
+  if (obj == nullptr || m == nullptr || obj->components != 1 || m->components != 1) return mat;
+  for (std::size_t i = 0; i < obj->data.size() && i < m->data.size(); ++i) {
+    const double o = obj->data[i];
+    if (o >= 0.0 && o < static_cast<double>(mat.size()) && m->data[i] >= 0.0)
+      mat[static_cast<std::size_t>(o)] = static_cast<int>(m->data[i]);
+  }
+  return mat;
+}
+
 void writeMarkers(const fs::path& file, const Snapshot& snap) {
   std::vector<Vec2> all;
   vtkNew<vtkCellArray> lines;
   vtkNew<vtkIntArray> object;
   object->SetName("object");
+  // Colouring the multiblock series by a grid array paints blocks without that array in the NaN
+  // colour; a "material" array on the lines lets "colour by material" draw them sensibly.
+  const std::vector<int> objectMaterial = objectMaterials(snap);
+  vtkNew<vtkIntArray> material;
+  material->SetName("material");
   vtkNew<vtkIntArray> closed;
   closed->SetName("closed");
   for (const Polyline& line : snap.markers) {
@@ -157,12 +185,17 @@ void writeMarkers(const fs::path& file, const Snapshot& snap) {
     for (vtkIdType i = 0; i < n; ++i) lines->InsertCellPoint(first + i);
     if (close) lines->InsertCellPoint(first);
     object->InsertNextValue(line.object);
+    material->InsertNextValue(line.object >= 0 &&
+                                      static_cast<std::size_t>(line.object) < objectMaterial.size()
+                                  ? objectMaterial[static_cast<std::size_t>(line.object)]
+                                  : -1);
     closed->InsertNextValue(line.closed ? 1 : 0);
   }
   vtkNew<vtkPolyData> pd;
   pd->SetPoints(pointsOf(all));
   pd->SetLines(lines);
   pd->GetCellData()->AddArray(object);
+  pd->GetCellData()->AddArray(material);
   pd->GetCellData()->AddArray(closed);
   addFieldData(pd, snap);
   writeXml<vtkXMLPolyDataWriter>(file, pd);

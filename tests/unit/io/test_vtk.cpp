@@ -71,17 +71,17 @@ TEST(Vtk, ParticlesOpenAsVerticesInTheXyPlaneWithTheirFields) {
     EXPECT_EQ(x[2], 0.0);
   }
   // Lossless compression: values come back bit for bit, special values included.
-  vtkDataArray* rho = ug->GetPointData()->GetArray("density");
+  vtkDataArray* rho = ug->GetPointData()->GetArray("density [g/cm^3]");
   ASSERT_NE(rho, nullptr);
   for (vtkIdType i = 0; i < 500; ++i)
     ASSERT_TRUE(sameBits(rho->GetTuple1(i), snap.fields[0].data[static_cast<std::size_t>(i)])) << i;
-  vtkDataArray* vel = ug->GetPointData()->GetArray("velocity");
+  vtkDataArray* vel = ug->GetPointData()->GetArray("velocity [cm/us]");
   ASSERT_NE(vel, nullptr);
   ASSERT_EQ(vel->GetNumberOfComponents(), 3);  // padded for ParaView's vector tools
   EXPECT_EQ(vel->GetComponent(42, 0), snap.fields[1].data[84]);
   EXPECT_EQ(vel->GetComponent(42, 1), snap.fields[1].data[85]);
   EXPECT_EQ(vel->GetComponent(42, 2), 0.0);
-  EXPECT_EQ(ug->GetPointData()->GetArray("deviatoric_stress")->GetNumberOfComponents(), 4);
+  EXPECT_EQ(ug->GetPointData()->GetArray("deviatoric_stress [Mbar]")->GetNumberOfComponents(), 4);
   EXPECT_EQ(fieldValue(ug, "TIME"), snap.time);
   EXPECT_EQ(fieldValue(ug, "CYCLE"), static_cast<double>(snap.step));
   auto* units = vtkStringArray::SafeDownCast(ug->GetFieldData()->GetAbstractArray("field_units"));
@@ -109,7 +109,7 @@ TEST(Vtk, GridOpensAsImageWithCellDataInGridSpecOrder) {
   EXPECT_EQ(dims[1], 21);
   EXPECT_EQ(dims[2], 1);
   ASSERT_EQ(img->GetNumberOfCells(), 600);
-  vtkDataArray* rho = img->GetCellData()->GetArray("density");
+  vtkDataArray* rho = img->GetCellData()->GetArray("density [g/cm^3]");
   ASSERT_NE(rho, nullptr);
   // density = 1000 k + i, so each cell proves both the ordering and the cell's position:
   // its VTK bounds must be the GridSpec cell (x0 + i dx .. x0 + (i+1) dx, z0 + k dz ..).
@@ -125,7 +125,7 @@ TEST(Vtk, GridOpensAsImageWithCellDataInGridSpecOrder) {
       EXPECT_NEAR(0.5 * (b[2] + b[3]), g.z0 + (k + 0.5) * g.dz, 1e-12);
     }
   EXPECT_EQ(img->GetCellData()->GetArray("volume_fraction")->GetNumberOfComponents(), 3);
-  EXPECT_EQ(img->GetCellData()->GetArray("velocity")->GetComponent(31, 2), 0.0);
+  EXPECT_EQ(img->GetCellData()->GetArray("velocity [cm/us]")->GetComponent(31, 2), 0.0);
   EXPECT_EQ(fieldValue(img, "TIME"), snap.time);
 }
 
@@ -157,6 +157,60 @@ TEST(Vtk, MarkerLinesOpenAsPolylinesWithObjectIds) {
   EXPECT_EQ(object->GetTuple1(0), 0.0);
   EXPECT_EQ(object->GetTuple1(1), 1.0);
   EXPECT_EQ(fieldValue(pd, "TIME"), snap.time);
+}
+
+// ParaView titles the colour legend with the array name: the unit must be in it (issue 11).
+// Dimensionless arrays keep their bare names.
+TEST(Vtk, ArrayNamesCarryTheirUnits) {
+  ScratchDir dir;
+  const auto files = writeVtk(dir / "p", particleSnapshot(5));
+  vtkNew<vtkXMLUnstructuredGridReader> r;
+  r->SetFileName(files[0].c_str());
+  r->Update();
+  vtkPointData* pd = r->GetOutput()->GetPointData();
+  std::vector<std::string> names;
+  for (int i = 0; i < pd->GetNumberOfArrays(); ++i) names.emplace_back(pd->GetArrayName(i));
+  EXPECT_EQ(names, (std::vector<std::string>{"density [g/cm^3]", "velocity [cm/us]",
+                                             "deviatoric_stress [Mbar]", "material"}));
+}
+
+// A grid series with markers is a multiblock in ParaView; colouring it by "material" must find
+// that array on the line block too (not the NaN colour), with each line's object's material.
+TEST(Vtk, MarkerLinesCarryTheMaterialOfTheirObject) {
+  ScratchDir dir;
+  Snapshot snap = gridSnapshot(4, 4);
+  const long n = snap.count();
+  Field obj{"object", "1", 1, std::vector<double>(static_cast<std::size_t>(n), -1.0)};
+  Field mat{"material", "1", 1, std::vector<double>(static_cast<std::size_t>(n), -1.0)};
+  obj.data[0] = 0.0;  // the circle (object 0) is of material 1
+  mat.data[0] = 1.0;
+  obj.data[5] = 1.0;  // the plate (object 1) of material 0
+  mat.data[5] = 0.0;
+  snap.fields.push_back(obj);
+  snap.fields.push_back(mat);
+  const auto files = writeVtk(dir / "m", snap);
+  ASSERT_EQ(files.size(), 2u);
+  vtkNew<vtkXMLPolyDataReader> r;
+  r->SetFileName(files[1].c_str());
+  r->Update();
+  vtkDataArray* material = r->GetOutput()->GetCellData()->GetArray("material");
+  ASSERT_NE(material, nullptr);
+  ASSERT_EQ(material->GetNumberOfTuples(), 2);
+  EXPECT_EQ(material->GetTuple1(0), 1.0);
+  EXPECT_EQ(material->GetTuple1(1), 0.0);
+  // The grid's material array has the same name, so one colour map covers both blocks.
+  vtkNew<vtkXMLImageDataReader> g;
+  g->SetFileName(files[0].c_str());
+  g->Update();
+  EXPECT_NE(g->GetOutput()->GetCellData()->GetArray("material"), nullptr);
+  // Without object and material cells the lines still get the array, as -1 (unknown).
+  const auto bare = writeVtk(dir / "b", gridSnapshot(4, 4));
+  vtkNew<vtkXMLPolyDataReader> b;
+  b->SetFileName(bare[1].c_str());
+  b->Update();
+  vtkDataArray* none = b->GetOutput()->GetCellData()->GetArray("material");
+  ASSERT_NE(none, nullptr);
+  EXPECT_EQ(none->GetTuple1(0), -1.0);
 }
 
 TEST(Vtk, ParticlesWithoutMarkersWriteNoPolyData) {
