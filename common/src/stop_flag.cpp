@@ -18,4 +18,8 @@ bool stopRequested() { return gStop != 0; }
 void requestStop() { gStop = 1; }
 void clearStop() { gStop = 0; }
 
+void throwIfStopRequested(const std::string& stage) {
+  if (gStop != 0) throw StopDuringSetUp("stopped during " + stage);
+}
+
 }  // namespace hvi

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "hvi/common/error.hpp"
+#include "hvi/common/stop_flag.hpp"
 
 namespace hvi::sph {
 namespace {
@@ -59,6 +60,9 @@ ParticleSystem fillBodies(const cases::Scene& scene) {
     const long k1 = static_cast<long>(std::ceil((zhi - dom.zmin) / g.az));
     std::size_t filled = 0;
     for (long k = k0; k <= k1; ++k) {
+      // Up to 1e7 particles (the validation cap) with a containment test each: seconds, so a
+      // stop request is honoured once per lattice row.
+      throwIfStopRequested("the SPH particle fill");
       const double z = dom.zmin + (static_cast<double>(k) + 0.5) * g.az;
       if (z < zlo || z > zhi || z > dom.zmax) continue;
       const double shift = (g.shiftOdd && (k & 1)) ? 0.5 : 0.0;

@@ -12,6 +12,7 @@
 #include "detail/boundary.hpp"
 #include "detail/passes.hpp"
 #include "hvi/common/error.hpp"
+#include "hvi/common/stop_flag.hpp"
 
 namespace hvi::sph {
 
@@ -46,6 +47,11 @@ MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) 
   std::map<int, double> maxMu;
   const long nl = static_cast<long>(n);
   for (;;) {
+    // Each pass is one sweep over the particles; a tight sph.mass_tolerance with a large
+    // sph.max_mass_iterations can run for hours, so a stop request is honoured between passes.
+    if (stopRequested())
+      throw StopDuringSetUp(fmt::format("stopped during the SPH mass iteration (pass {})",
+                                        report.iterations));
     double residual = 0.0;
     long worst = -1;
 #pragma omp parallel if (nl > detail::kParallelPairs)

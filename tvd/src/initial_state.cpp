@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "hvi/common/stop_flag.hpp"
 #include "hvi/tvd/tvd.hpp"
 #include "interface_normals.hpp"
 
@@ -30,7 +31,9 @@ void TvdSolver::initialiseState(const cases::Scene& scene) {
 
   if (markersOn_) {
     markerSet_ = MarkerSet::fromBodies(scene, grid_);
+    throwIfStopRequested("the TVD marker lines");
     markerSet_.rasterize(grid_, owner_, normal_);
+    throwIfStopRequested("the TVD marker lines");
     detail::interfaceNormals(markerSet_, grid_, owner_, normal_, normalLength_);
     ownerNew_.assign(n, -1);
     normalNew_.assign(n, Vec2{});
@@ -59,53 +62,61 @@ void TvdSolver::initialiseState(const cases::Scene& scene) {
   constexpr int S = 4;
   const bool rz = geometry_ == Geometry::Axisymmetric;
   const std::size_t nb = scene.bodies.size();
+  // Up to 5e7 cells of 16 samples each (tens of seconds): built in blocks of 2^20 cells so that
+  // a stop request is honoured between blocks. Each cell's state depends on that cell only, so
+  // the blocking changes no bit.
+  constexpr long kBlock = 1L << 20;
+  for (long c0 = 0; c0 < cells; c0 += kBlock) {
+    throwIfStopRequested("the TVD initial state");
+    const long c1 = std::min(cells, c0 + kBlock);
 #pragma omp parallel num_threads(threads_) if (grid_.cells() >= kParallelCells)
-  {
-    // Weights are summed per body and the states combined in body order, so the result does
-    // not depend on the order of the samples: mirror-image cells get bitwise mirrored states.
-    // A radial field is averaged over the samples: momentum sum(w v) per body, and the kinetic
-    // energy of that mean velocity (the spread of directions in a cell at the centre must not
-    // become heat in a cold stream). A uniform body needs neither.
-    std::vector<double> weight(nb + 1), wvx(nb + 1), wvz(nb + 1);
+    {
+      // Weights are summed per body and the states combined in body order, so the result does
+      // not depend on the order of the samples: mirror-image cells get bitwise mirrored states.
+      // A radial field is averaged over the samples: momentum sum(w v) per body, and the kinetic
+      // energy of that mean velocity (the spread of directions in a cell at the centre must not
+      // become heat in a cold stream). A uniform body needs neither.
+      std::vector<double> weight(nb + 1), wvx(nb + 1), wvz(nb + 1);
 #pragma omp for schedule(static)
-    for (long c = 0; c < cells; ++c) {
-      const int i = static_cast<int>(c % grid_.nx), k = static_cast<int>(c / grid_.nx);
-      std::fill(weight.begin(), weight.end(), 0.0);
-      std::fill(wvx.begin(), wvx.end(), 0.0);
-      std::fill(wvz.begin(), wvz.end(), 0.0);
-      for (int a = 0; a < S; ++a) {
-        for (int b = 0; b < S; ++b) {
-          const Vec2 p{grid_.x0 + (i + (a + 0.5) / S) * grid_.dx,
-                       grid_.z0 + (k + (b + 0.5) / S) * grid_.dz};
-          std::size_t owner = nb;  // vacuum
-          for (std::size_t bi = 0; bi < nb; ++bi)
-            if (cases::contains(scene.bodies[bi].shape, p)) {
-              owner = bi;
-              break;
+      for (long c = c0; c < c1; ++c) {
+        const int i = static_cast<int>(c % grid_.nx), k = static_cast<int>(c / grid_.nx);
+        std::fill(weight.begin(), weight.end(), 0.0);
+        std::fill(wvx.begin(), wvx.end(), 0.0);
+        std::fill(wvz.begin(), wvz.end(), 0.0);
+        for (int a = 0; a < S; ++a) {
+          for (int b = 0; b < S; ++b) {
+            const Vec2 p{grid_.x0 + (i + (a + 0.5) / S) * grid_.dx,
+                         grid_.z0 + (k + (b + 0.5) / S) * grid_.dz};
+            std::size_t owner = nb;  // vacuum
+            for (std::size_t bi = 0; bi < nb; ++bi)
+              if (cases::contains(scene.bodies[bi].shape, p)) {
+                owner = bi;
+                break;
+              }
+            const double w = rz ? p.x : 1.0;  // r-z: volume weight r
+            weight[owner] += w;
+            if (owner < nb && scene.bodies[owner].radial) {
+              const Vec2 v = cases::initialVelocity(scene.bodies[owner], geometry_, p);
+              wvx[owner] += w * v.x;
+              wvz[owner] += w * v.z;
             }
-          const double w = rz ? p.x : 1.0;  // r-z: volume weight r
-          weight[owner] += w;
-          if (owner < nb && scene.bodies[owner].radial) {
-            const Vec2 v = cases::initialVelocity(scene.bodies[owner], geometry_, p);
-            wvx[owner] += w * v.x;
-            wvz[owner] += w * v.z;
           }
         }
-      }
-      double wsum = 0.0;
-      for (double w : weight) wsum += w;
-      const auto cc = static_cast<std::size_t>(c);
-      for (std::size_t bi = 0; bi <= nb; ++bi) {
-        if (!(weight[bi] > 0.0)) continue;
-        if (bi < nb && scene.bodies[bi].radial) {
-          const BodyState& b = bodyStates_[bi];
-          U_.rho[cc] += b.rho * weight[bi] / wsum;
-          U_.mx[cc] += b.rho * wvx[bi] / wsum;
-          U_.mz[cc] += b.rho * wvz[bi] / wsum;
-          const double vx = wvx[bi] / weight[bi], vz = wvz[bi] / weight[bi];
-          U_.E[cc] += b.rho * (b.e + 0.5 * (vx * vx + vz * vz)) * weight[bi] / wsum;
-        } else {
-          put(cc, bi < nb ? bodyStates_[bi] : vacuum, weight[bi] / wsum);
+        double wsum = 0.0;
+        for (double w : weight) wsum += w;
+        const auto cc = static_cast<std::size_t>(c);
+        for (std::size_t bi = 0; bi <= nb; ++bi) {
+          if (!(weight[bi] > 0.0)) continue;
+          if (bi < nb && scene.bodies[bi].radial) {
+            const BodyState& b = bodyStates_[bi];
+            U_.rho[cc] += b.rho * weight[bi] / wsum;
+            U_.mx[cc] += b.rho * wvx[bi] / wsum;
+            U_.mz[cc] += b.rho * wvz[bi] / wsum;
+            const double vx = wvx[bi] / weight[bi], vz = wvz[bi] / weight[bi];
+            U_.E[cc] += b.rho * (b.e + 0.5 * (vx * vx + vz * vz)) * weight[bi] / wsum;
+          } else {
+            put(cc, bi < nb ? bodyStates_[bi] : vacuum, weight[bi] / wsum);
+          }
         }
       }
     }

@@ -8,6 +8,7 @@
 
 #include "eos_traits.hpp"
 #include "root_find.hpp"
+#include "hvi/common/stop_flag.hpp"
 
 namespace hvi::verify::detail {
 namespace {
@@ -95,7 +96,10 @@ Isentrope::Isentrope(const eos::Eos& eos, double rho, double e) : eos_(eos), rho
   const double eScale = std::max({std::abs(e), std::abs(k.p) / rho, k.c * k.c});
   const double atolE = 1e-14 * eScale, atolW = 1e-14 * k.c;
   double h = 1e-3;
-  for (;;) {
+  for (long pass = 0;; ++pass) {
+    // Bounded (sigma <= 700 in steps up to kMaxStep, ~1e4 nodes) but rejected steps can shrink h
+    // to 1e-15 first: `hvi run` is told about a stop request every 1024 passes.
+    if ((pass & 1023) == 1023) throwIfStopRequested("the exact Riemann solution (isentrope)");
     const Point last = nodes_.back();
     if (last.sigma >= sigmaMax) {
       end_ = last;
