@@ -1,5 +1,6 @@
 //! @file The `hvi` command line: run, check, compare.
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
@@ -16,9 +17,10 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("hvi ") + HVI_VERSION);
   app.require_subcommand(1);
   app.footer(
-      "Exit status: 0 success, 1 compare thresholds exceeded, 2 bad input (scene, options),\n"
-      "3 simulation failed (diagnostic printed, last state written), 130 interrupted (checkpoint\n"
-      "written; continue with --restart). Units are cm-g-us (see docs/scenes.md).");
+      "Exit status: 0 success, 1 compare thresholds exceeded, 2 bad input (scene, options, output\n"
+      "folder), 3 simulation failed (diagnostic printed, last state written), 4 an output file\n"
+      "could not be written (disk full, ...; the last checkpoint is intact), 130 interrupted\n"
+      "(checkpoint written; continue with --restart). Units are cm-g-us (see docs/scenes.md).");
 
   hvi::app::RunOptions run;
   auto* runCmd = app.add_subcommand("run", "Run a scene: snapshots (HDF5, VTK), summary.json");
@@ -27,9 +29,13 @@ int main(int argc, char** argv) {
   runCmd->add_option("--set,-s", run.overrides,
                      "Override a scene value, e.g. --set sph.alpha=1.5 --set 'time.end=2 us'");
   runCmd->add_flag("--restart", run.restart, "Continue from <out>/checkpoint.bin");
+  runCmd->add_flag("--overwrite", run.overwrite,
+                   "Remove the results of an earlier run in --out first (only files hvi run writes)");
   runCmd->add_flag("--quiet,-q", run.quiet, "No progress line");
   runCmd->add_option("--stop-after", run.stopAfterSteps,
-                     "Stop (with a checkpoint) after this many steps, as Ctrl-C would");
+                     "Stop (with a checkpoint, exit 130) after this many steps, as Ctrl-C would; 0: "
+                     "before the first step");
+  run.program = argc > 0 ? argv[0] : "hvi";
 
   std::string checkScene;
   std::vector<std::string> checkOverrides;
@@ -45,6 +51,17 @@ int main(int argc, char** argv) {
   cmpCmd->add_option("b", cmpB, "Snapshot (.h5) or run folder")->required();
   hvi::compare::addCliOptions(*cmpCmd, cmp);
 
+  // CLI11 reports a mistyped command as an unexpected argument; name it and the commands instead.
+  const auto isCommand = [&](const std::string& name) {
+    for (const auto* sub : app.get_subcommands([](CLI::App*) { return true; }))
+      if (sub->get_name() == name) return true;
+    return false;
+  };
+  if (argc > 1 && argv[1][0] != '-' && !isCommand(argv[1])) {
+    fmt::print(stderr, "hvi: unknown command '{}'; the commands are run, check and compare (see "
+                       "hvi --help)\n", argv[1]);
+    return hvi::app::kBadInput;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -52,18 +69,38 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? hvi::app::kOk : hvi::app::kBadInput;
   }
 
-  if (*runCmd) return hvi::app::runScene(run);
-  if (*checkCmd) {
-    try {
-      const auto scene = hvi::cases::loadScene(checkScene, checkOverrides);
-      std::cout << hvi::cases::toToml(scene);
-      fmt::print(stderr, "hvi: {} is valid\n", checkScene);
-      return hvi::app::kOk;
-    } catch (const hvi::InputError& e) {
-      fmt::print(stderr, "hvi: {}\n", e.what());
-      return hvi::app::kBadInput;
+  // Each command turns its own errors into exit codes; this is the last line of defence, so
+  // that nothing ends in std::terminate (exit 134) with a message the user cannot act on.
+  try {
+    if (*runCmd) {
+      const int rc = hvi::app::runScene(run);
+      if (rc == hvi::app::kOutputFailed || rc == hvi::app::kSimulationFailed) {
+        // After a failed H5Fclose (disk full) HDF5 1.10 keeps a half-closed file in its ID table
+        // and its atexit handler then segfaults (exit 139 instead of 4). Every file hvi wrote is
+        // closed and renamed or removed by now, so skipping the exit handlers loses nothing.
+        std::fflush(nullptr);
+        std::_Exit(rc);
+      }
+      return rc;
     }
+    if (*checkCmd) {
+      try {
+        const auto scene = hvi::cases::loadScene(checkScene, checkOverrides);
+        std::cout << hvi::cases::toToml(scene);
+        fmt::print(stderr, "hvi: {} is valid\n", checkScene);
+        return hvi::app::kOk;
+      } catch (const hvi::InputError& e) {
+        fmt::print(stderr, "hvi: {}\n", e.what());
+        return hvi::app::kBadInput;
+      }
+    }
+    if (*cmpCmd) return hvi::compare::runCompareCommand(cmpA, cmpB, cmp);
+  } catch (const hvi::OutputError& e) {
+    fmt::print(stderr, "hvi: output could not be written: {}\n", e.what());
+    return hvi::app::kOutputFailed;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "hvi: internal error: {}\n", e.what());
+    return hvi::app::kSimulationFailed;
   }
-  if (*cmpCmd) return hvi::compare::runCompareCommand(cmpA, cmpB, cmp);
   return hvi::app::kBadInput;
 }

@@ -2,8 +2,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
-#include <regex>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -34,44 +34,77 @@ void addCliOptions(CLI::App& cmd, CompareCliOptions& opt) {
   cmd.add_option("--min-iou", opt.minIou,
                  "Fail (exit 1) if the smallest object (or material) IoU is below this");
   cmd.add_flag("--quiet,-q", opt.quiet, "Do not print the table");
+  cmd.add_flag("--force", opt.force,
+               "Compare snapshots of different scenes (bodies, materials or domain differ) whose "
+               "domains overlap");
 }
+
+namespace {
+//! The snapshots a run folder's record lists, in order: (time, file). timeseries.json is
+//! rewritten with every snapshot and cut back on restart, so it names exactly this run's files.
+std::vector<std::pair<double, fs::path>> recordedSnapshots(const fs::path& dir) {
+  const fs::path record = dir / "timeseries.json";
+  std::error_code ec;
+  if (!fs::is_regular_file(record, ec))
+    throw InputError(fmt::format("compare: '{}' is not an hvi run folder (it has no "
+                                 "timeseries.json); give a snapshot file (.h5) or a folder "
+                                 "written by hvi run", dir.string()));
+  std::ifstream in(record);
+  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("snapshots") ||
+      !j["snapshots"].is_array())
+    throw InputError(fmt::format("compare: {} is not a run record (no \"snapshots\" list)",
+                                 record.string()));
+  std::vector<std::pair<double, fs::path>> v;
+  for (const auto& e : j["snapshots"]) {
+    if (!e.is_object() || !e.contains("file") || !e["file"].is_string() || !e.contains("time") ||
+        !e["time"].is_number())
+      throw InputError(fmt::format("compare: {}: a snapshot entry lacks \"file\" or \"time\"",
+                                   record.string()));
+    const std::string stem = e["file"].get<std::string>();
+    // Only a plain name inside the folder: the record cannot send the reader elsewhere.
+    if (stem.empty() || stem.find('/') != std::string::npos || stem[0] == '.')
+      throw InputError(fmt::format("compare: {}: snapshot name '{}' is not a file of the folder",
+                                   record.string(), stem));
+    v.emplace_back(e["time"].get<double>(), dir / (stem + ".h5"));
+  }
+  if (v.empty())
+    throw InputError(fmt::format("compare: run folder '{}' has no snapshot yet ({} lists none)",
+                                 dir.string(), record.string()));
+  return v;
+}
+
+Snapshot readRecorded(const fs::path& file, const fs::path& dir, std::string* sceneToml) {
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec))
+    throw InputError(fmt::format("compare: {} lists {}, which is missing (the run wrote no HDF5 "
+                                 "snapshots, output.hdf5 = false, or the file was removed)",
+                                 (dir / "timeseries.json").string(), file.string()));
+  return io::readHdf5(file, sceneToml);
+}
+}  // namespace
 
 Snapshot loadSnapshot(const fs::path& path, std::optional<double> time, double tolerance,
                       std::string* sceneToml, fs::path* chosen) {
   std::error_code ec;
   if (!fs::exists(path, ec))
     throw InputError(fmt::format("compare: '{}' does not exist; give an HDF5 snapshot (.h5) or a "
-                                 "run folder holding snap_*.h5", path.string()));
+                                 "run folder written by hvi run", path.string()));
   if (!fs::is_directory(path, ec)) {
     if (chosen) *chosen = path;
     return io::readHdf5(path, sceneToml);
   }
-  // Run folder: the driver writes snap_<step>.h5; the largest step is the last snapshot.
-  static const std::regex pattern(R"(snap_(\d+)\.h5)");
-  std::vector<std::pair<long long, fs::path>> files;
-  for (const auto& e : fs::directory_iterator(path)) {
-    std::smatch m;
-    const std::string name = e.path().filename().string();
-    if (e.is_regular_file() && std::regex_match(name, m, pattern))
-      files.emplace_back(std::stoll(m[1].str()), e.path());
-  }
-  if (files.empty())
-    throw InputError(fmt::format("compare: run folder '{}' holds no snap_<step>.h5 snapshot",
-                                 path.string()));
-  std::sort(files.begin(), files.end());
+  const auto files = recordedSnapshots(path);
   if (!time) {
     if (chosen) *chosen = files.back().second;
-    return io::readHdf5(files.back().second, sceneToml);
+    return readRecorded(files.back().second, path, sceneToml);
   }
   std::vector<double> times;
-  for (const auto& [step, file] : files) {
-    std::string toml;
-    Snapshot s = io::readHdf5(file, &toml);
-    times.push_back(s.time);
-    if (std::abs(s.time - *time) <= tolerance) {
-      if (sceneToml) *sceneToml = std::move(toml);
+  for (const auto& [t, file] : files) {
+    times.push_back(t);
+    if (std::abs(t - *time) <= tolerance) {
       if (chosen) *chosen = file;
-      return s;
+      return readRecorded(file, path, sceneToml);
     }
   }
   throw InputError(fmt::format("compare: run folder '{}' has no snapshot within {} us of t = {} "
@@ -92,16 +125,84 @@ std::optional<FeatureConfig> configFrom(const std::string& toml, const fs::path&
   }
 }
 
+//! The physical problem of a scene: geometry, domain, materials and bodies as the resolved
+//! TOML writes them, with what only says how it is solved (solver, its resolution and
+//! parameters, times, outputs, effects, title) reset. SPH and TVD runs of one problem agree.
+std::string problemKey(cases::Scene s) {
+  const cases::Scene defaults;
+  s.path.clear();
+  s.title.clear();
+  s.solver = defaults.solver;
+  s.sph = defaults.sph;
+  s.tvd = defaults.tvd;
+  s.riemann = defaults.riemann;
+  s.tStart = defaults.tStart;
+  s.tEnd = defaults.tEnd;
+  s.output = defaults.output;
+  s.effects.clear();
+  return cases::toToml(s);
+}
+
+//! Refuses two snapshots of unrelated problems (a Sod tube against an impact): their numbers
+//! would mean nothing. `force` admits different scenes whose domains overlap.
+void checkSameProblem(const std::string& tomlA, const std::string& tomlB, const fs::path& fileA,
+                      const fs::path& fileB, bool force) {
+  std::optional<cases::Scene> sa, sb;
+  try {
+    if (!tomlA.empty()) sa = cases::parseScene(tomlA, fileA.string());
+    if (!tomlB.empty()) sb = cases::parseScene(tomlB, fileB.string());
+  } catch (const InputError&) {
+  }
+  if (!sa || !sb) {
+    fmt::print(stderr, "hvi compare: note: {} stores no readable scene; cannot check that A and B "
+                       "are the same problem\n", (!sa ? fileA : fileB).string());
+    return;
+  }
+  if (problemKey(*sa) == problemKey(*sb)) return;
+  const auto& da = sa->domain;
+  const auto& db = sb->domain;
+  const bool overlap = std::min(da.xmax, db.xmax) > std::max(da.xmin, db.xmin) &&
+                       std::min(da.zmax, db.zmax) > std::max(da.zmin, db.zmin);
+  const std::string what = fmt::format(
+      "A ({}, \"{}\") and B ({}, \"{}\") are snapshots of different scenes (their geometry, "
+      "domain, materials or bodies differ)", fileA.string(), sa->title, fileB.string(), sb->title);
+  if (sa->geometry != sb->geometry)
+    throw InputError(fmt::format("compare: {}; their geometries differ ({} and {}): nothing to "
+                                 "compare, even with --force", what, toString(sa->geometry),
+                                 toString(sb->geometry)));
+  if (!overlap)
+    throw InputError(fmt::format(
+        "compare: {}; their domains x [{}, {}] z [{}, {}] and x [{}, {}] z [{}, {}] cm do not "
+        "overlap: nothing to compare, even with --force",
+        what, da.xmin, da.xmax, da.zmin, da.zmax, db.xmin, db.xmax, db.zmin, db.zmax));
+  if (!force)
+    throw InputError(fmt::format("compare: {}; give --force to compare them anyway", what));
+  fmt::print(stderr, "hvi compare: --force: {}\n", what);
+}
+
+void checkThresholds(const CompareCliOptions& opt) {
+  if (opt.maxDensityL1 && !(std::isfinite(*opt.maxDensityL1) && *opt.maxDensityL1 >= 0.0))
+    throw InputError(fmt::format("compare: --max-density-l1 {} must be a number >= 0 (a relative "
+                                 "L1 difference)", *opt.maxDensityL1));
+  if (opt.minIou && !(*opt.minIou >= 0.0 && *opt.minIou <= 1.0))
+    throw InputError(fmt::format("compare: --min-iou {} must lie in [0, 1] (an IoU is a fraction)",
+                                 *opt.minIou));
+  if (opt.time && !std::isfinite(*opt.time))
+    throw InputError(fmt::format("compare: --time {} must be a finite time in us", *opt.time));
+}
+
 int compareImpl(const fs::path& a, const fs::path& b, const CompareCliOptions& opt) {
-  if (opt.spacing && !(*opt.spacing > 0.0))
+  if (opt.spacing && !(*opt.spacing > 0.0 && std::isfinite(*opt.spacing)))
     throw InputError(fmt::format("compare: --spacing {} must be a positive length in cm",
                                  *opt.spacing));
   if (!(opt.timeTolerance >= 0.0))
     throw InputError("compare: --time-tolerance must be >= 0");
+  checkThresholds(opt);
   std::string tomlA, tomlB;
   fs::path fileA, fileB;
   const Snapshot sa = loadSnapshot(a, opt.time, opt.timeTolerance, &tomlA, &fileA);
   const Snapshot sb = loadSnapshot(b, opt.time, opt.timeTolerance, &tomlB, &fileB);
+  checkSameProblem(tomlA, tomlB, fileA, fileB, opt.force);
   if (std::abs(sa.time - sb.time) > opt.timeTolerance)
     fmt::print(stderr, "hvi compare: warning: A is at t = {} us and B at t = {} us\n", sa.time,
                sb.time);
@@ -176,6 +277,10 @@ int runCompareCommand(const fs::path& a, const fs::path& b, const CompareCliOpti
   } catch (const fs::filesystem_error& e) {
     report(e.what());
     return 2;
+  } catch (const OutputError& e) {
+    // As for hvi run: 4 is "an output file could not be written".
+    report(e.what());
+    return 4;
   }
 }
 

@@ -1,7 +1,11 @@
 //! @file Checkpoint container: magic, version, header, body, body length, FNV-1a 64 checksum.
 #include "hvi/io/checkpoint.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <array>
+#include <cerrno>
 #include <cstring>
 #include <fstream>
 #include <streambuf>
@@ -9,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "hvi/common/atomic_file.hpp"
+#include "hvi/common/error.hpp"
 
 namespace hvi::io {
 namespace fs = std::filesystem;
@@ -64,6 +69,73 @@ class HashingOutBuf : public std::streambuf {
   std::streambuf* sink_;
   std::uint64_t hash_;
   std::uint64_t count_ = 0;
+  std::array<char, bufferBytes> buffer_{};
+};
+
+//! Writes to a file descriptor and keeps the errno of the first failed write, so that a failed
+//! checkpoint can say why (disk full, quota, I/O error): a std::ofstream only says "failed".
+class FdOutBuf : public std::streambuf {
+ public:
+  explicit FdOutBuf(const fs::path& file)
+      : fd_(::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644)) {
+    if (fd_ < 0) error_ = errno;
+    setp(buffer_.data(), buffer_.data() + buffer_.size());
+  }
+  ~FdOutBuf() override {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  FdOutBuf(const FdOutBuf&) = delete;
+  FdOutBuf& operator=(const FdOutBuf&) = delete;
+  //! 0 while every write succeeded, else the errno of the first failure.
+  int error() const { return error_; }
+  //! Flushes and closes; false (with error() set) if anything failed.
+  bool close() {
+    const bool flushed = flushBuffer();
+    if (fd_ >= 0 && ::close(fd_) != 0 && error_ == 0) error_ = errno;
+    fd_ = -1;
+    return flushed && error_ == 0;
+  }
+
+ protected:
+  int_type overflow(int_type ch) override {
+    if (!flushBuffer()) return traits_type::eof();
+    if (!traits_type::eq_int_type(ch, traits_type::eof())) {
+      *pptr() = traits_type::to_char_type(ch);
+      pbump(1);
+    }
+    return traits_type::not_eof(ch);
+  }
+  std::streamsize xsputn(const char* s, std::streamsize n) override {
+    if (n >= static_cast<std::streamsize>(buffer_.size())) {
+      if (!flushBuffer() || !writeAll(s, static_cast<std::size_t>(n))) return 0;
+      return n;
+    }
+    return std::streambuf::xsputn(s, n);
+  }
+  int sync() override { return flushBuffer() ? 0 : -1; }
+
+ private:
+  bool flushBuffer() {
+    const auto n = static_cast<std::size_t>(pptr() - pbase());
+    setp(buffer_.data(), buffer_.data() + buffer_.size());
+    return writeAll(buffer_.data(), n);
+  }
+  bool writeAll(const char* p, std::size_t n) {
+    if (error_ != 0) return false;
+    while (n > 0) {
+      const ssize_t w = ::write(fd_, p, n);
+      if (w < 0 && errno == EINTR) continue;
+      if (w <= 0) {
+        error_ = w < 0 ? errno : ENOSPC;
+        return false;
+      }
+      p += w;
+      n -= static_cast<std::size_t>(w);
+    }
+    return true;
+  }
+  int fd_;
+  int error_ = 0;
   std::array<char, bufferBytes> buffer_{};
 };
 
@@ -128,22 +200,34 @@ std::string readString(std::istream& in) {
 void writeCheckpointFile(const fs::path& file, const std::string& header,
                          const std::function<void(std::ostream&)>& body) {
   writeAtomically(file, [&](const fs::path& tmp) {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error(fmt::format("cannot create checkpoint {}", tmp.string()));
+    FdOutBuf sink(tmp);
+    // A failed write names the checkpoint and the system's reason; the body's own exception
+    // (a solver that sees its stream fail says only "write failed") is replaced by it.
+    const auto writeFailed = [&] {
+      return OutputError(fmt::format("cannot write checkpoint {}: {} (the previous checkpoint "
+                                     "is unchanged)", file.string(), errnoText(sink.error())));
+    };
+    if (sink.error() != 0) throw writeFailed();
+    std::ostream out(&sink);
     std::array<char, prefixBytes> prefix{};
     std::memcpy(prefix.data(), magic.data(), magic.size());
     putLe(prefix.data() + 8, checkpointFormatVersion, 4);
     putLe(prefix.data() + 12, header.size(), 8);
     out.write(prefix.data(), prefix.size());
     out.write(header.data(), static_cast<std::streamsize>(header.size()));
-    out.flush();
     std::uint64_t hash = fnv1a64(prefix.data(), prefix.size());
     hash = fnv1a64(header.data(), header.size(), hash);
 
-    HashingOutBuf hashing(out.rdbuf(), hash);
+    HashingOutBuf hashing(&sink, hash);
     std::ostream bodyStream(&hashing);
-    if (body) body(bodyStream);
+    try {
+      if (body) body(bodyStream);
+    } catch (...) {
+      if (sink.error() != 0) throw writeFailed();
+      throw;
+    }
     bodyStream.flush();
+    if (sink.error() != 0) throw writeFailed();
     if (!bodyStream)
       throw std::runtime_error(fmt::format("writing checkpoint body to {} failed", tmp.string()));
 
@@ -151,8 +235,7 @@ void writeCheckpointFile(const fs::path& file, const std::string& header,
     putLe(trailer.data(), hashing.count(), 8);
     putLe(trailer.data() + 8, fnv1a64(trailer.data(), 8, hashing.hash()), 8);
     out.write(trailer.data(), trailer.size());
-    out.close();
-    if (!out) throw std::runtime_error(fmt::format("writing checkpoint {} failed", tmp.string()));
+    if (!sink.close()) throw writeFailed();
   });
 }
 

@@ -1,10 +1,15 @@
 //! @file Crash safety: a failed or killed write leaves the previous file complete.
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
+#include <csignal>
+#include <cstring>
+#include <fstream>
 #include <thread>
 
 #include <fmt/format.h>
@@ -136,6 +141,99 @@ TEST(Atomic, CheckpointWriteKilledMidwayLeavesACompleteFile) {
     else EXPECT_EQ(readArray<double>(in), state);
   });
   EXPECT_EQ(header, completed == 0 ? "old" : "new");
+}
+
+//! A full disk, portably: RLIMIT_FSIZE makes every write past `bytes` fail with EFBIG (SIGXFSZ
+//! ignored, as a signal would end the test), which is how ENOSPC reaches a writer too. Restored
+//! on destruction; the limit is per file, so the test's other files are not affected.
+class FileSizeLimit {
+ public:
+  explicit FileSizeLimit(rlim_t bytes) {
+    ::getrlimit(RLIMIT_FSIZE, &saved_);
+    oldHandler_ = std::signal(SIGXFSZ, SIG_IGN);
+    rlimit l = saved_;
+    l.rlim_cur = bytes;
+    ::setrlimit(RLIMIT_FSIZE, &l);
+  }
+  ~FileSizeLimit() {
+    ::setrlimit(RLIMIT_FSIZE, &saved_);
+    std::signal(SIGXFSZ, oldHandler_);
+  }
+  FileSizeLimit(const FileSizeLimit&) = delete;
+  FileSizeLimit& operator=(const FileSizeLimit&) = delete;
+
+ private:
+  rlimit saved_{};
+  void (*oldHandler_)(int) = nullptr;
+};
+
+std::string readText(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+TEST(Atomic, FullDiskTextWriteNamesFileAndCauseAndKeepsOldFile) {
+  ScratchDir dir;
+  writeTextAtomically(dir / "summary.json", "old");
+  const std::string big(1 << 16, 'x');
+  try {
+    FileSizeLimit full(4096);
+    writeTextAtomically(dir / "summary.json", big);
+    ADD_FAILURE() << "a write past the file size limit succeeded";
+  } catch (const OutputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("summary.json"), std::string::npos) << what;
+    EXPECT_NE(what.find(std::strerror(EFBIG)), std::string::npos) << what;
+  }
+  EXPECT_EQ(readText(dir / "summary.json"), "old");
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"summary.json"});
+}
+
+TEST(Atomic, FullDiskCheckpointNamesFileAndCauseAndKeepsOldCheckpoint) {
+  ScratchDir dir;
+  writeCheckpointFile(dir / "checkpoint.bin", "old", [](std::ostream& out) { writeValue(out, 7L); });
+  const std::vector<double> state(1 << 16, 1.0);
+  try {
+    FileSizeLimit full(8192);
+    // A solver that sees its stream fail throws its own vague error ("SPH checkpoint: write
+    // failed"); the container must replace it by the file and the system's reason.
+    writeCheckpointFile(dir / "checkpoint.bin", "new", [&](std::ostream& out) {
+      writeArray(out, state);
+      if (!out) throw SimulationError("SPH checkpoint: write failed");
+    });
+    ADD_FAILURE() << "a checkpoint past the file size limit was written";
+  } catch (const OutputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("checkpoint.bin"), std::string::npos) << what;
+    EXPECT_NE(what.find(std::strerror(EFBIG)), std::string::npos) << what;
+  }
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"checkpoint.bin"});
+  EXPECT_EQ(readCheckpointFile(dir / "checkpoint.bin",
+                               [](std::istream& in) { EXPECT_EQ(readValue<long>(in), 7L); }),
+            "old");
+}
+
+TEST(Atomic, UnwritableFolderIsAnOutputErrorNamingTheFolder) {
+  // Below a regular file no folder can be made, for root too.
+  ScratchDir dir;
+  std::ofstream(dir / "plain") << "x";
+  try {
+    writeTextAtomically(dir.path() / "plain" / "sub" / "a.json", "{}");
+    ADD_FAILURE();
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("plain/sub"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(std::strerror(ENOTDIR)), std::string::npos) << e.what();
+  }
+}
+
+TEST(Atomic, TemporaryNamesCarryTheirOwner) {
+  const fs::path t = temporaryPath("out/snap_00000012.h5", 4321);
+  EXPECT_EQ(t, fs::path("out/.snap_00000012.h5.tmp4321.h5"));
+  EXPECT_EQ(temporaryOwner(t.filename().string()), 4321L);
+  EXPECT_EQ(temporaryOwner(".checkpoint.bin.tmp77.bin"), 77L);
+  EXPECT_FALSE(temporaryOwner("snap_00000012.h5"));
+  EXPECT_FALSE(temporaryOwner(".hvi.lock"));
+  EXPECT_FALSE(temporaryOwner(".x.tmp"));
 }
 
 }  // namespace

@@ -18,4 +18,12 @@ class SimulationError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+//! An output file could not be written (disk full, quota, read-only file system, ...). The
+//! message names the file and the operating system's reason; the file's previous content is
+//! intact (every write goes through writeAtomically). The driver stops the run with exit 4.
+class OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 }  // namespace hvi

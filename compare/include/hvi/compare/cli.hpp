@@ -17,21 +17,28 @@ struct CompareCliOptions {
   std::optional<double> maxDensityL1;  //!< bound on the material-region relative L1
   std::optional<double> minIou;        //!< bound on the smallest object (or material) IoU
   bool quiet = false;                  //!< no table on stdout
+  //! Compare snapshots of different scenes (bodies, materials, domain differ) whose domains
+  //! overlap; without it they are refused as unrelated problems.
+  bool force = false;
 };
 
 //! Adds the options above to the `compare` subcommand.
 void addCliOptions(CLI::App& cmd, CompareCliOptions& opt);
 
-//! A snapshot file, or the snapshot of a run folder (files snap_*.h5) at `time` (within
-//! `tolerance`) or the last one. `sceneToml` receives the resolved scene stored in the file.
-//! Throws InputError naming the path and, for a time with no snapshot, the times available.
+//! A snapshot file, or the snapshot of a run folder at `time` (within `tolerance`) or the last
+//! one. A run folder's snapshots are those its own record (timeseries.json) lists, never other
+//! .h5 files lying there (an older run's, a copy). `sceneToml` receives the resolved scene
+//! stored in the file. Throws InputError naming the path and, for a time with no snapshot, the
+//! times available.
 Snapshot loadSnapshot(const std::filesystem::path& path, std::optional<double> time,
                       double tolerance, std::string* sceneToml = nullptr,
                       std::filesystem::path* chosen = nullptr);
 
 //! Runs `hvi compare A B`: prints the table, writes <out>/compare.json and
 //! <out>/compare_diff.vti. Returns 0 (compared, thresholds met), 1 (a threshold failed) or 2
-//! (bad input: missing file, no snapshot at the time, incompatible snapshots).
+//! (bad input: missing file, no snapshot at the time, incompatible snapshots, snapshots of
+//! different problems without `force`, thresholds that are NaN, negative or an IoU above 1)
+//! or 4 (compare.json or the difference file could not be written).
 int runCompareCommand(const std::filesystem::path& a, const std::filesystem::path& b,
                       const CompareCliOptions& opt);
 
