@@ -2,6 +2,7 @@
 #pragma once
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,13 +32,19 @@ struct RunResult {
   //! TVD: max |M - M0 - (boundary flux)| / M0, i.e. mass made or lost by anything but the
   //! domain boundary (interfaces, owner changes, floors: the vacuum treatment).
   double massError = 0.0;
-  //! TVD: max |M - M0 - ledger.sum()| / M0 (the ledger's closure: round-off). SPH: 0.
-  double massClosure = 0.0;
+  //! TVD only (empty for SPH, which has no ledger): max |M - M0 - ledger.sum()| / M0, the
+  //! ledger's closure (round-off).
+  std::optional<double> massClosure;
   double energyError = 0.0;                         //!< as massError, for kinetic + internal energy
   double massDriftEnd = 0.0, energyDriftEnd = 0.0;  //!< the same, signed, at the end
-  double energyClosure = 0.0;                       //!< as massClosure
+  std::optional<double> energyClosure;              //!< as massClosure, for the energy
+  //! TVD only: max |P - P0 - ledger momentum| / sqrt(2 M0 E0) over the components the ledger
+  //! closes (z always, x in planar geometry: r-z radial momentum has the P/r source).
+  std::optional<double> momentumClosure;
   double outflowMass = 0.0;    //!< fraction of M0 that left through outflow sides by the end
-  bool massesBitwise = true;   //!< SPH: every particle kept its initial mass bit for bit
+  //! SPH only (empty for TVD): every particle, found by its unique id, kept its initial mass bit
+  //! for bit at every check. Set at the first check.
+  std::optional<bool> massesBitwise;
   double maxSpeed = 0.0;       //!< cm/us, over the checks
   double minDensity = 0.0;     //!< g/cm^3, material only, over the checks
   double maxPressure = 0.0;    //!< Mbar
