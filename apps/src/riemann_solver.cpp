@@ -3,6 +3,7 @@
 
 #include <istream>
 #include <ostream>
+#include <variant>
 
 #include "hvi/common/error.hpp"
 #include "hvi/verify/riemann.hpp"
@@ -15,8 +16,13 @@ class RiemannSolver final : public Solver {
   explicit RiemannSolver(const cases::Scene& s) : scene_(s), t_(s.tStart) {
     if (s.bodies.size() != 2)
       throw InputError(s.path + ": solver \"riemann\" needs exactly two bodies (left, right)");
-    const auto& l = s.bodies[0];
-    const auto& r = s.bodies[1];
+    // Validation lets the bodies come in either order (cases/src/validate.cpp, checkRiemann):
+    // the left one is the one that starts further left.
+    const auto* r0 = std::get_if<cases::Rect>(&s.bodies[0].shape);
+    const auto* r1 = std::get_if<cases::Rect>(&s.bodies[1].shape);
+    if (r0 && r1 && r1->xmin < r0->xmin) left_ = 1;
+    const auto& l = s.bodies[left_];
+    const auto& r = s.bodies[1 - left_];
     exact_ = std::make_unique<verify::ExactRiemann>(
         s.materials[l.material].eos, verify::RiemannState{l.density, l.velocity.x, l.specificEnergy},
         s.materials[r.material].eos, verify::RiemannState{r.density, r.velocity.x, r.specificEnergy});
@@ -62,8 +68,8 @@ class RiemannSolver final : public Solver {
       p.data[i] = c.p;
       v.data[2 * i] = c.u;
       e.data[i] = c.e;
-      mat.data[i] = c.material < 0 ? scene_.bodies[0].material
-                                   : (c.material > 0 ? scene_.bodies[1].material : -1);
+      mat.data[i] = c.material < 0 ? scene_.bodies[left_].material
+                                   : (c.material > 0 ? scene_.bodies[1 - left_].material : -1);
     }
     s.fields = {rho, p, v, e, mat};
     for (const auto& m : scene_.materials) s.materialNames.push_back(m.name);
@@ -99,7 +105,7 @@ class RiemannSolver final : public Solver {
     const double dt = t_ - scene_.tStart;
     const double d = x - scene_.riemann.interface;
     if (dt <= 0.0) {
-      const auto& b = scene_.bodies[d < 0.0 ? 0 : 1];
+      const auto& b = scene_.bodies[d < 0.0 ? left_ : 1 - left_];
       const double pr = eos::pressure(scene_.materials[b.material].eos, b.density, b.specificEnergy);
       return {b.density, b.velocity.x, pr, b.specificEnergy, d < 0.0 ? -1 : 1};
     }
@@ -107,6 +113,7 @@ class RiemannSolver final : public Solver {
   }
 
   cases::Scene scene_;
+  std::size_t left_ = 0;  //!< index of the left body in scene_.bodies
   std::unique_ptr<verify::ExactRiemann> exact_;
   GridSpec grid_;
   double t_;

@@ -7,8 +7,9 @@
 
 namespace hvi::app {
 
-//! solver = "riemann": bodies[0] is the left state, bodies[1] the right state, meeting at
-//! x = riemann.interface; the solution is sampled on riemann.cells cells across the domain.
+//! solver = "riemann": the body further left (smaller x) is the left state, the other the right
+//! state, in either order in the scene, meeting at x = riemann.interface; the solution is sampled
+//! on riemann.cells cells across the domain.
 std::unique_ptr<Solver> createRiemannSolver(const cases::Scene& scene);
 
 }  // namespace hvi::app
