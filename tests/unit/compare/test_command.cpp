@@ -2,7 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <cmath>
 #include <fstream>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -33,6 +35,18 @@ class CompareCommand : public ::testing::Test {
     write(root_ / "a" / "snap_20.h5", disk(0.0), g, 1.0, 20);
     write(root_ / "b" / "snap_0.h5", disk(0.0), g, 0.0, 0);
     write(root_ / "b" / "snap_31.h5", disk(0.03), g, 1.0, 31);  // shifted by 3 cells
+    record(root_ / "a", {{0.0, "snap_0"}, {1.0, "snap_20"}});
+    record(root_ / "b", {{0.0, "snap_0"}, {1.0, "snap_31"}});
+  }
+  //! The run's record, as hvi run writes it: only the snapshots listed here belong to the run.
+  static void record(const fs::path& dir, const std::vector<std::pair<double, std::string>>& snaps) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& [t, stem] : snaps) list.push_back({{"time", t}, {"file", stem}});
+    std::ofstream(dir / "timeseries.json") << nlohmann::json{{"snapshots", list}}.dump();
+  }
+  static std::string sceneText(const char* name) {
+    std::ifstream in(fs::path(HVI_SOURCE_DIR) / "cases" / "scenes" / name);
+    return {std::istreambuf_iterator<char>(in), {}};
   }
   static void write(const fs::path& f, const test::Scene2& s, const GridSpec& g, double t,
                     long step) {
@@ -121,6 +135,62 @@ TEST_F(CompareCommand, SphAgainstTvdWithFeaturesFromTheStoredScene) {
     EXPECT_TRUE(j[side]["features"]["cloud_leading_edge_z"].is_null()) << side;
   }
   EXPECT_NEAR(j["grid"]["dx"].get<double>(), 0.015, 1e-12);
+}
+
+// An .h5 the run's record does not list (an older run's, a copy) is never read, even when its
+// step number is the largest.
+TEST_F(CompareCommand, RunFolderReadsOnlyTheSnapshotsItsRecordLists) {
+  const GridSpec g{80, 80, -0.4, -0.4, 0.01, 0.01};
+  write(root_ / "a" / "snap_99.h5", disk(0.2), g, 1.0, 99);  // stale, not in a's record
+  CompareCliOptions o = opts("out");
+  ASSERT_EQ(runCompareCommand(root_ / "a", root_ / "b", o), 0);
+  std::ifstream in(o.out / "compare.json");
+  EXPECT_NE(nlohmann::json::parse(in)["a"]["file"].get<std::string>().find("snap_20.h5"),
+            std::string::npos);
+  // A folder without a record is not a run folder; a listed file that is gone is named.
+  fs::remove(root_ / "a" / "timeseries.json");
+  EXPECT_EQ(runCompareCommand(root_ / "a", root_ / "b", o), 2);
+  record(root_ / "a", {{0.0, "snap_0"}, {1.0, "snap_21"}});
+  EXPECT_EQ(runCompareCommand(root_ / "a", root_ / "b", o), 2);
+  record(root_ / "a", {{0.0, "../b/snap_0"}});
+  EXPECT_EQ(runCompareCommand(root_ / "a", root_ / "b", o), 2);
+}
+
+TEST_F(CompareCommand, ThresholdsThatMeanNothingAreRefused) {
+  for (const auto& [l1, iou] : std::vector<std::pair<std::optional<double>, std::optional<double>>>{
+           {std::nan(""), std::nullopt}, {-0.1, std::nullopt}, {std::nullopt, 1.5},
+           {std::nullopt, -0.5}, {std::nullopt, std::nan("")}, {HUGE_VAL, std::nullopt}}) {
+    CompareCliOptions o = opts("out");
+    o.maxDensityL1 = l1;
+    o.minIou = iou;
+    EXPECT_EQ(runCompareCommand(root_ / "a", root_ / "b", o), 2);
+  }
+  CompareCliOptions o = opts("out");
+  o.minIou = 0.0;
+  o.maxDensityL1 = 1e9;
+  EXPECT_EQ(runCompareCommand(root_ / "a", root_ / "b", o), 0);  // the bounds themselves are fine
+}
+
+// Sod's tube against an impact: unrelated problems, refused even with --force (their domains
+// barely overlap). Two scenes of one geometry whose domains overlap: refused unless --force.
+TEST_F(CompareCommand, UnrelatedProblemsAreRefusedUnlessForcedAndSharingADomain) {
+  const GridSpec g{80, 80, -0.4, -0.4, 0.01, 0.01};
+  Snapshot s = test::gridOf(disk(0.0), g);
+  io::writeHdf5(root_ / "sod.h5", s, sceneText("sod_x.toml"));
+  io::writeHdf5(root_ / "sod_b.h5", s, sceneText("sod_x.toml"));
+  io::writeHdf5(root_ / "impact.h5", s, sceneText("default.toml"));
+  std::string other = sceneText("sod_x.toml");
+  const auto at = other.find("\"0.125 g/cm^3\"");
+  ASSERT_NE(at, std::string::npos);
+  other.replace(at, 14, "\"0.2 g/cm^3\"");  // another right state: another problem, same domain
+  io::writeHdf5(root_ / "sod_moved.h5", s, other);
+  CompareCliOptions o = opts("out");
+  EXPECT_EQ(runCompareCommand(root_ / "sod.h5", root_ / "sod_b.h5", o), 0);
+  EXPECT_EQ(runCompareCommand(root_ / "sod.h5", root_ / "impact.h5", o), 2);
+  EXPECT_EQ(runCompareCommand(root_ / "sod.h5", root_ / "sod_moved.h5", o), 2);
+  o.force = true;
+  EXPECT_EQ(runCompareCommand(root_ / "sod.h5", root_ / "sod_moved.h5", o), 0);
+  EXPECT_EQ(runCompareCommand(root_ / "sod.h5", root_ / "impact.h5", o), 2);
 }
 
 }  // namespace
