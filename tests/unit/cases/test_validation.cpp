@@ -226,6 +226,65 @@ TEST(SceneValidation, RiemannInterfaceDefaultsToWhereTheBodiesMeet) {
 }
 
 // The exact format the README documents: <file>:<line>: <key>: <problem>; allowed: <...>
+std::string errorWith(const std::string& text, const std::vector<std::string>& overrides) {
+  try {
+    (void)parseScene(text, "v.toml", overrides);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Collinear vertices give a round-off area, not 0 (issue 11): refused as zero area, while a
+// genuinely thin polygon (1e-4 of its length) is still a polygon.
+TEST(SceneValidation, NearlyCollinearPolygonIsZeroArea) {
+  const std::string collinear = errorOf(plateScene(polygon(
+      "sliver", "[[\"0 cm\", \"0 cm\"], [\"0.1 cm\", \"0.3 cm\"], [\"0.3 cm\", \"0.9 cm\"]]")));
+  EXPECT_NE(collinear.find("bodies[0].vertices"), std::string::npos) << collinear;
+  EXPECT_NE(collinear.find("collinear"), std::string::npos) << collinear;
+  // 2 cm long, 2e-4 cm thick, spacing 1e-4 cm (a few particles across, under the memory cap).
+  EXPECT_EQ(errorWith(plateScene(polygon("thin", "[[\"0 cm\", \"1 cm\"], [\"2 cm\", \"1 cm\"], "
+                                                 "[\"2 cm\", \"1.0002 cm\"], [\"0 cm\", \"1.0002 cm\"]]")),
+                      {"sph.spacing=0.0001 cm", "domain.x=[\"-1 cm\", \"3 cm\"]",
+                       "bodies[1].x=[\"-1 cm\", \"3 cm\"]", "bodies[1].z=[\"-0.0004 cm\", \"0 cm\"]",
+                       "domain.z=[\"-0.0004 cm\", \"1.001 cm\"]"}),
+            "");
+}
+
+// A step below the round-off of t would leave t where it is (issue 11, item 8). The plate scene's
+// first step is ~3e-3 us (0.01 cm, c ~ 0.5 cm/us, cfl 0.3), so its bound is ~1.4e7 us.
+TEST(SceneValidation, TimesWhoseStepsRoundOffSwallowsAreRefused) {
+  const std::string scene = plateScene(disk("rod", "0 cm", "0.5 cm", "0.5 cm"));
+  EXPECT_EQ(errorWith(scene, {"time.start=1e6 us", "time.end=1.001e6 us"}), "");
+  const std::string late = errorWith(scene, {"time.start=1e9 us", "time.end=1.001e9 us"});
+  EXPECT_NE(late.find("time.end"), std::string::npos) << late;
+  EXPECT_NE(late.find("round-off"), std::string::npos) << late;
+  // Negative times count by their magnitude: the start is the larger one here.
+  const std::string early = errorWith(scene, {"time.start=-1e9 us", "time.end=-0.999e9 us"});
+  EXPECT_NE(early.find("time.start"), std::string::npos) << early;
+  // The exact solution jumps from output time to output time: no step to lose.
+  EXPECT_EQ(errorWith(scene, {"solver=riemann", "time.start=1e9 us", "time.end=1.001e9 us"})
+                .find("round-off"),
+            std::string::npos);
+}
+
+// What the solvers refuse at set-up, `check` refuses first, naming file, line and key.
+TEST(SceneValidation, SetUpRefusalsAreCaughtByValidation) {
+  // A diagonal strip 0.0071 cm wide between the rows of the 0.01 cm lattice (z - x in
+  // (0.002, 0.007) cm while sites have z - x a multiple of 0.01 cm): no particle.
+  const std::string strip = errorOf(plateScene(polygon(
+      "strip", "[[\"0.105 cm\", \"0.107 cm\"], [\"0.805 cm\", \"0.807 cm\"], "
+               "[\"0.805 cm\", \"0.812 cm\"], [\"0.105 cm\", \"0.112 cm\"]]")));
+  EXPECT_NE(strip.find("\"strip\" holds no SPH particle"), std::string::npos) << strip;
+  EXPECT_NE(strip.find("v.toml:"), std::string::npos) << strip;
+  // The same strip is fine a lattice finer.
+  EXPECT_EQ(errorWith(plateScene(polygon(
+                          "strip", "[[\"0.105 cm\", \"0.107 cm\"], [\"0.805 cm\", \"0.807 cm\"], "
+                                   "[\"0.805 cm\", \"0.812 cm\"], [\"0.105 cm\", \"0.112 cm\"]]")),
+                      {"sph.spacing=0.001 cm"}),
+            "");
+}
+
 TEST(SceneValidation, MessageFormat) {
   std::string t = plateScene(disk("rod", "0 cm", "0.5 cm", "0.5 cm"));
   t.replace(t.find("solver = \"sph\""), 14, "solver = \"tvdd\"");
