@@ -219,7 +219,8 @@ class Run {
                          "then continue with `{}`\n",
                  ckpt_.string(), *checkpointTime_, checkpointStep_, restartCommand(opts_));
     else
-      fmt::print(stderr, "hvi: no checkpoint was written yet; make room and run again with --overwrite\n");
+      fmt::print(stderr, "hvi: no checkpoint was written yet; make room and run again{}\n",
+                 runFiles(opts_.out).empty() ? "" : " with --overwrite");
     // Best effort: summary.json says what happened when there is room for it.
     try {
       if (solver_)
