@@ -88,7 +88,10 @@ std::pair<int, std::string> runCaptured(const app::RunOptions& o,
 
 //! The hvi binary through the shell; returns the exit status, stderr in `err`.
 int shell(const std::string& cmd, std::string* err = nullptr) {
-  const fs::path errFile = fs::path(HVI_BINARY_DIR) / "test_out" / "app_rel" / "stderr.txt";
+  // One file per test: ctest -j runs the tests of this binary side by side.
+  const fs::path errFile = fs::path(HVI_BINARY_DIR) / "test_out" / "app_rel" /
+                           (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+                            ".stderr");
   fs::create_directories(errFile.parent_path());
   const int st = std::system(fmt::format("OMP_WAIT_POLICY=passive {} 2> {}", cmd,
                                          app::shellQuote(errFile.string())).c_str());
