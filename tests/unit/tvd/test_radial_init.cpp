@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "hvi/common/stop_flag.hpp"
+
 #include "tvd_scenes.hpp"
 
 namespace hvi::tvd {
@@ -60,6 +62,21 @@ TEST(TvdRadialInit, StreamOntoTheAxisIsUniformOffIt) {
     EXPECT_EQ(U.rho[c], 1.0);
     EXPECT_EQ(U.mx[c], -1.0);
     EXPECT_EQ(U.mz[c], 0.0);
+  }
+}
+
+// SIGINT/SIGTERM while the grid is filled (up to 5e7 cells): set-up ends with StopDuringSetUp,
+// which `hvi run` reports as exit 130 with nothing to checkpoint (issue 11, item 7).
+TEST(TvdRadialInit, StopRequestEndsTheSetUp) {
+  for (bool markers : {false, true}) {
+    SCOPED_TRACE(markers ? "markers" : "no markers");
+    cases::Scene s = baseScene(-1.0, 1.0, -1.0, 1.0, 0.05);
+    s.materials.push_back(material("gas", eos::IdealGas{5.0 / 3.0, 1.0}));
+    s.bodies.push_back(radialDisk(-1.0, markers, s));
+    requestStop();
+    EXPECT_THROW(TvdSolver{s}, StopDuringSetUp);
+    clearStop();
+    EXPECT_NO_THROW(TvdSolver{s});
   }
 }
 
