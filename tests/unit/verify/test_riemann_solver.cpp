@@ -1,10 +1,14 @@
 //! @file The exact Riemann solution behind the Solver interface (apps/src/riemann_solver.cpp).
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
+#include <unistd.h>
 
+#include "hvi/apps/driver.hpp"
 #include "hvi/apps/riemann_solver.hpp"
 #include "hvi/cases/load.hpp"
+#include "hvi/common/stop_flag.hpp"
 
 namespace hvi::app {
 namespace {
@@ -63,6 +67,28 @@ TEST(RiemannSolver, BodiesInEitherOrderGiveTheSameSolution) {
     }
     EXPECT_EQ(rho[0], rho[1]) << "t = " << t;
   }
+}
+
+// A stop request while the solver is built (SPH fill or mass iteration, TVD grid, exact
+// solution) ends `hvi run` with exit 130 and no checkpoint: nothing has been computed yet.
+TEST(RiemannSolver, StopDuringSetUpExits130WithoutCheckpoint) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("hvi_setup_stop_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  RunOptions o;
+  o.scene = fs::path(HVI_SOURCE_DIR) / "cases" / "scenes" / "sod_x.toml";
+  o.out = dir / "out";
+  o.quiet = true;
+  const int rc = runScene(o, [](const cases::Scene& scene) -> std::unique_ptr<Solver> {
+    auto solver = createRiemannSolver(scene);  // the real set-up, then the signal arrives
+    requestStop();
+    throwIfStopRequested("the test's set-up");
+    return solver;
+  });
+  clearStop();
+  EXPECT_EQ(rc, kInterrupted);
+  EXPECT_FALSE(fs::exists(o.out / "checkpoint.bin"));
+  fs::remove_all(dir);
 }
 
 }  // namespace
