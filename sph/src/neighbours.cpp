@@ -18,11 +18,21 @@ int CellGrid::cellZ(double z) const {
 
 void CellGrid::build(const double* x, const double* z, const double* h, std::size_t n,
                      double cellSize) {
-  double xmin = 0.0, xmax = 0.0, zmin = 0.0, zmax = 0.0;
-  if (n > 0) {
-    xmin = xmax = x[0];
-    zmin = zmax = z[0];
+  if (n == 0) {
+    // No points (every particle has left the domain, or an empty subset): one empty cell, so
+    // lookups stay valid; the cell size of an empty set (0 from its largest h) is meaningless.
+    x0_ = z0_ = 0.0;
+    inv_ = 1.0;
+    nx_ = nz_ = 1;
+    start_.assign(2, 0);
+    cellOf_.clear();
+    order_.clear();
+    sx_.clear();
+    sz_.clear();
+    sh_.clear();
+    return;
   }
+  double xmin = x[0], xmax = x[0], zmin = z[0], zmax = z[0];
   for (std::size_t i = 1; i < n; ++i) {
     xmin = std::min(xmin, x[i]); xmax = std::max(xmax, x[i]);
     zmin = std::min(zmin, z[i]); zmax = std::max(zmax, z[i]);

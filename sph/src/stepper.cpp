@@ -206,7 +206,15 @@ Stepper::~Stepper() = default;
 
 double Stepper::step(double tStop) {
   Impl& s = *impl_;
-  if (s.t >= tStop || s.n == 0) return 0.0;
+  if (s.t >= tStop) return 0.0;
+  if (s.n == 0) {
+    // Every particle has left through an outflow boundary: nothing is left to evolve, so the
+    // state at tStop is the present one. One counted step keeps snapshot names distinct.
+    const double dt = tStop - s.t;
+    s.t = tStop;
+    ++s.steps;
+    return dt;
+  }
   detail::PairArrays& a = s.a;
   const long nl = static_cast<long>(s.n);
   const detail::Rates ratesN{s.ax0.data(), s.az0.data(), s.de0.data(), s.drho0.data(),
@@ -253,6 +261,11 @@ double Stepper::step(double tStop) {
   s.removeOutflow();
   s.t = (s.t + dt >= tStop) ? tStop : s.t + dt;
   ++s.steps;
+  if (s.n == 0) {
+    s.list.count.clear();
+    s.bounds.makeGhosts(a, 0, 0.0);
+    return dt;
+  }
   s.corrector();
   return dt;
 }

@@ -38,27 +38,37 @@ inline Vec2 toCellUnits(const GridSpec& g, Vec2 p) {
 
 //! Splits segment a-b (cell units) at the four lines bounding [0, nx] x [0, nz] and calls
 //! f(pa, pb) for each sub-segment in order; each lies entirely inside or outside the box in x
-//! and in z, so a monotone clamp maps it to a straight segment.
+//! and in z, so a monotone clamp maps it to a straight segment. A cut point sits exactly on the
+//! line it cuts: computed as a + t d it may land a rounding error outside, and a sub-segment
+//! inside the box would then begin with a sliver in the row or column beyond the grid.
 template <class F>
 inline void splitAtBox(Vec2 a, Vec2 b, double nx, double nz, F&& f) {
-  double ts[5];
+  struct Cut {
+    double t;
+    int axis;  // 0: a line x = level, 1: a line z = level
+    double level;
+  };
+  Cut cuts[4];
   int n = 0;
-  ts[n++] = 0.0;
   const Vec2 d = b - a;
-  auto addCut = [&](double a0, double d0, double level) {
+  auto addCut = [&](double a0, double d0, double level, int axis) {
     if (d0 == 0.0) return;
     const double t = (level - a0) / d0;
-    if (t > 0.0 && t < 1.0) ts[n++] = t;
+    if (t > 0.0 && t < 1.0) cuts[n++] = {t, axis, level};
   };
-  addCut(a.x, d.x, 0.0);
-  addCut(a.x, d.x, nx);
-  addCut(a.z, d.z, 0.0);
-  addCut(a.z, d.z, nz);
-  for (int s = 2; s < n; ++s)  // insertion sort of at most 4 values
-    for (int r = s; r > 1 && ts[r] < ts[r - 1]; --r) std::swap(ts[r], ts[r - 1]);
+  addCut(a.x, d.x, 0.0, 0);
+  addCut(a.x, d.x, nx, 0);
+  addCut(a.z, d.z, 0.0, 1);
+  addCut(a.z, d.z, nz, 1);
+  for (int s = 1; s < n; ++s)  // insertion sort of at most 4 values
+    for (int r = s; r > 0 && cuts[r].t < cuts[r - 1].t; --r) std::swap(cuts[r], cuts[r - 1]);
   Vec2 p0 = a;
-  for (int s = 1; s <= n; ++s) {
-    const Vec2 p1 = s == n ? b : a + ts[s] * d;
+  for (int s = 0; s <= n; ++s) {
+    Vec2 p1 = b;
+    if (s < n) {
+      p1 = a + cuts[s].t * d;
+      (cuts[s].axis == 0 ? p1.x : p1.z) = cuts[s].level;
+    }
     f(p0, p1);
     p0 = p1;
   }

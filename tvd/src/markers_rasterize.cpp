@@ -59,6 +59,10 @@ void accumulate(const std::vector<MarkerLine>& lines, int object, const GridSpec
   auto piece = [&](int i, int k, Vec2 pa, Vec2 pb) {
     const double dh = pb.z - pa.z;
     if (dh == 0.0 || i >= g.nx || k >= g.nz) return;  // horizontal, or right of/above the grid
+    // The pieces come from clamped points, so only a rounding error can put one outside the
+    // box; it then belongs to the box's edge cell.
+    i = std::clamp(i, b.i0, b.i1 - 1);
+    k = std::clamp(k, b.k0, b.k1 - 1);
     const double xm = 0.5 * (pa.x + pb.x) - i;
     const long base = (k - b.k0) * stride + (i - b.i0);
     // Object on the left of travel: a downward piece covers what lies to its right.
@@ -153,8 +157,10 @@ void MarkerSet::rasterizeInto(const GridSpec& grid, std::vector<int>& owner,
     const std::size_t n = l.points.size();
     if (n < 2) continue;
     auto piece = [&](int i, int k, Vec2 pa, Vec2 pb) {
-      i = std::min(i, grid.nx - 1);  // a piece lying on the last face belongs to the last cell
-      k = std::min(k, grid.nz - 1);
+      // A piece lying on the last face belongs to the last cell; the clamp below zero guards the
+      // owner and normal arrays against a rounding error at the first face.
+      i = std::clamp(i, 0, grid.nx - 1);
+      k = std::clamp(k, 0, grid.nz - 1);
       const long c = static_cast<long>(k) * grid.nx + i;
       const Vec2 d{(pb.x - pa.x) * grid.dx, (pb.z - pa.z) * grid.dz};
       const double sign = owner[static_cast<std::size_t>(c)] == l.object ? 1.0 : -1.0;

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 
 #include "helpers.hpp"
 #include "markers_internal.hpp"
@@ -42,6 +43,37 @@ TEST(MarkerKernel, CellPiecesTileTheSegment) {
   EXPECT_NEAR(length, norm(b - a), 1e-13);
   // Cells crossed: 7 vertical + 7 horizontal grid lines, plus the first cell.
   EXPECT_EQ(pieces, 15);
+}
+
+// Splitting at the grid box: a cut point lies exactly on the box line it cuts, so a sub-segment
+// inside the box has no sliver beyond it. Computed as a + t d the cut used to land a rounding
+// error outside, and the first cell piece of an inside sub-segment then had i or k = -1: the
+// normals pass wrote before the owner array (the variant-2 TVD run to 15 us crashed on it).
+TEST(MarkerKernel, BoxCutsLieExactlyOnTheBox) {
+  const double nx = 150.0, nz = 162.0;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-0.3, 1.3);
+  int inside = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const Vec2 a{nx * u(rng), nz * u(rng)}, b{nx * u(rng), nz * u(rng)};
+    Vec2 last = a;
+    detail::splitAtBox(a, b, nx, nz, [&](Vec2 p, Vec2 q) {
+      ASSERT_EQ(p, last);
+      last = q;
+      const Vec2 m = 0.5 * (p + q);
+      if (m.x < 0.0 || m.x > nx || m.z < 0.0 || m.z > nz || p == q) return;
+      ++inside;
+      for (Vec2 r : {p, q}) {
+        ASSERT_TRUE(r.x >= 0.0 && r.x <= nx && r.z >= 0.0 && r.z <= nz)
+            << "trial " << trial << ": (" << r.x << ", " << r.z << ") outside the box";
+      }
+      detail::forEachCellPiece(p, q, [&](int i, int k, Vec2, Vec2) {
+        ASSERT_TRUE(i >= 0 && i <= nx && k >= 0 && k <= nz) << "trial " << trial;
+      });
+    });
+    ASSERT_EQ(last, b);
+  }
+  EXPECT_GT(inside, 10000);  // most random segments reach into the box
 }
 
 // A rectangle: every cell's fraction is the product of the 1-D overlaps (exact), so the only
