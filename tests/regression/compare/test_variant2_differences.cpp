@@ -33,7 +33,8 @@ TEST(Variant2Differences, SlowerStrikerFailsThresholdsARerunPasses) {
   EXPECT_EQ(rerun.status, 0) << rerun.json["thresholds"].dump();
 
   const CommandResult slow =
-      compareCommand(root / "base", root / "slow", root / "slow_cmp", kMinIou, kMaxDensityL1);
+      compareCommand(root / "base", root / "slow", root / "slow_cmp", kMinIou, kMaxDensityL1,
+                     /*force=*/true);
   EXPECT_EQ(slow.status, 1);
   EXPECT_FALSE(slow.json["thresholds"]["pass"].get<bool>());
   const double iou = slow.json["objects"]["min_iou"].get<double>();
@@ -67,7 +68,8 @@ TEST(Variant2Differences, ShiftedImpactFailsThresholdsUndoingTheShiftPasses) {
             0);
 
   const CommandResult shifted =
-      compareCommand(root / "base", root / "shifted", root / "shift_cmp", kMinIou, kMaxDensityL1);
+      compareCommand(root / "base", root / "shifted", root / "shift_cmp", kMinIou, kMaxDensityL1,
+                     /*force=*/true);
   EXPECT_EQ(shifted.status, 1);
   std::printf("shifted by 2 cells: min IoU %.4f  rel L1 %.4f\n",
               shifted.json["objects"]["min_iou"].get<double>(),

@@ -81,10 +81,12 @@ struct CommandResult {
   nlohmann::json json;
 };
 
+//! `force`: B is a deliberately altered scene (hvi compare refuses different scenes without it).
 inline CommandResult compareCommand(const fs::path& a, const fs::path& b, const fs::path& out,
                                     std::optional<double> minIou,
-                                    std::optional<double> maxDensityL1) {
+                                    std::optional<double> maxDensityL1, bool force = false) {
   CompareCliOptions o;
+  o.force = force;
   o.time = kTime;
   o.out = out;
   o.quiet = true;

@@ -171,10 +171,16 @@ TEST(Driver, RestartRefusesAnotherScene) {
   first.stopAfterSteps = 2;
   ASSERT_EQ(app::runScene(first), app::kInterrupted);
   clearStop();
+  const auto sceneText = [&] {
+    std::ifstream in(out / "scene.toml");
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  const std::string before = sceneText();
   auto second = smallImpact("tvd", out);
   second.restart = true;
   second.overrides.push_back("tvd.cfl=0.2");
   EXPECT_EQ(app::runScene(second), app::kBadInput);
+  EXPECT_EQ(sceneText(), before) << "a refused restart replaced the run's scene.toml";
 }
 
 // SIGINT through the real binary: the run stops between steps, writes a checkpoint, exits 130.
