@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Soak runs: every shipped scene (tests/soak/runs.txt), coarse, to 4x its end time. Each run must
 # finish (exit 0, summary.json "completed") or stop with a clear diagnostic (exit 3, a message
-# on stderr, summary.json "failed" with its error); a signal, an abort, any other status or a
-# hang (past --timeout) fails it. Docs: docs/reliability.md.
+# on stderr, summary.json "failed" with its error, not an "internal error"); a signal, an abort,
+# any other status or a hang (past --timeout) fails it. Docs: docs/reliability.md.
 #
 #   tools/soak.sh [--hvi PATH] [--out DIR] [--timeout S] [--list] [NAME...]
 #
@@ -89,7 +89,10 @@ while IFS='|' read -r name scene rest; do
     0) if [[ "$status" == completed ]]; then verdict=ok; note="completed"
        else note="exit 0 but summary.json status '$status'"; fi ;;
     3) err="$(summary "$dir/summary.json" error)"
-       if [[ "$status" == failed && -n "$err" && -s "$out/$name.log" ]]; then
+       if [[ "$err" == *"internal error"* ]]; then
+         # The driver turns a solver's stray exception into exit 3: a bug, not a diagnostic.
+         note="exit 3 from an internal error (a bug): $(tr '\t\n' '  ' <<<"$err" | cut -c1-200)"
+       elif [[ "$status" == failed && -n "$err" && -s "$out/$name.log" ]]; then
          verdict=ok; note="exit 3: $(tr '\t\n' '  ' <<<"$err" | cut -c1-200)"
        else note="exit 3 without a full diagnostic (summary status '$status', error '$err')"; fi ;;
     124|137) note="hang: still running after ${timeout_s} s (timeout killed it)" ;;
