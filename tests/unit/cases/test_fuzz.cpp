@@ -94,7 +94,8 @@ TEST(SceneFuzz, DamagedScenesParseOrGiveInputError) {
   EXPECT_EQ(otherExceptions, 0);
   EXPECT_EQ(badMessages, 0);
   // Both outcomes occur, and rejections come from both the TOML reader and the validator: a
-  // mutator that only broke the syntax (or never did) would not test what it claims.
+  // mutator that only broke the syntax (or never did) would not test what it claims. Measured
+  // 52% syntax and 35% keyed; 5% each is far below either, so only a broken mutator fails it.
   EXPECT_GT(parsedShipped, 0);
   EXPECT_GT(rejectedBroken, 0);
   EXPECT_GT(rejected, kTrials / 4);  // the mutations do break most scenes
