@@ -27,6 +27,7 @@ scenes=(
   "hard/dense_striker.toml|time.end=0.3 us;output.times=[\"0.3 us\"]"
   "study/noh_cylindrical_rz.toml|"
 )
+mkdir -p "$work/old" "$work/new"
 status=0
 for entry in "${scenes[@]}"; do
   scene=${entry%%|*}

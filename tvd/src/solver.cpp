@@ -38,10 +38,10 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
 #endif
   const int lineCells = std::max(grid_.nx, grid_.nz);
   for (int t = 0; t < threads_; ++t) work_.push_back(std::make_unique<Workspace>(lineCells));
+  lineRecords_.resize(static_cast<std::size_t>(lineCells));
   time_ = scene.tStart;
   initialiseState(scene);
   if (markersOn_) {
-    for (auto& w : work_) w->boundaryMass.assign(materials_.size(), 0.0);
     materialMass_.assign(materials_.size(), 0.0);
     materialBand_.assign(materials_.size(), 0.0);
     measureMaterials();

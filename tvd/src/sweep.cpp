@@ -129,6 +129,8 @@ void TvdSolver::sweep(int direction, double dt) {
     detail::LineWork& W = ws.line;
 #pragma omp for schedule(dynamic, 2)
     for (int line = 0; line < lines; ++line) {
+      LineRecord& rec = lineRecords_[static_cast<std::size_t>(line)];
+      rec = LineRecord{};
       if (ws.failed) continue;
       const long base = xdir ? static_cast<long>(line) * nx : line;
       auto at = [&](int pos) { return base + pos * step; };
@@ -202,7 +204,9 @@ void TvdSolver::sweep(int direction, double dt) {
       if (!fn(W, setup, ctx, lb, fail)) {
         const int pos = a - 2 + fail.j;
         const int i = xdir ? pos : line, k = xdir ? line : pos;
+        if (ws.failed && ws.failedLine < line) continue;
         ws.failed = true;
+        ws.failedLine = line;
         ws.message = fmt::format(
             "tvd: step {} ({} sweep, dt = {:.4g} us): cell (i={}, k={}) at x = {:.6g}, z = {:.6g} "
             "cm: {} (rho = {:.6g} g/cm^3, e = {:.6g} cm^2/us^2)",
@@ -221,32 +225,36 @@ void TvdSolver::sweep(int direction, double dt) {
         B.energy += lineScale * v[3];
       };
       if (own != nullptr) {  // per material, for renormaliseMaterials()
-        if (setup.leftEdge && W.mat[2] >= 0)
-          ws.boundaryMass[static_cast<std::size_t>(W.mat[2])] += lineScale * lb.edgeMass[0];
-        if (setup.rightEdge && W.mat[n + 1] >= 0)
-          ws.boundaryMass[static_cast<std::size_t>(W.mat[n + 1])] += lineScale * lb.edgeMass[1];
+        if (setup.leftEdge && W.mat[2] >= 0) {
+          rec.edgeMass[0] = lineScale * lb.edgeMass[0];
+          rec.edgeMaterial[0] = W.mat[2];
+        }
+        if (setup.rightEdge && W.mat[n + 1] >= 0) {
+          rec.edgeMass[1] = lineScale * lb.edgeMass[1];
+          rec.edgeMaterial[1] = W.mat[n + 1];
+        }
       }
-      add(ws.boundary, lb.boundary);
-      add(ws.interfaces, lb.interfaces);
-      add(ws.floors, lb.floors);
+      add(rec.boundary, lb.boundary);
+      add(rec.interfaces, lb.interfaces);
+      add(rec.floors, lb.floors);
     }
   }
-  for (auto& w : work_) {
-    ledger_.boundary += w->boundary;
-    ledger_.interfaces += w->interfaces;
-    ledger_.floors += w->floors;
-    w->boundary = w->interfaces = w->floors = Budget{};
-    for (std::size_t m = 0; m < w->boundaryMass.size(); ++m) {
-      materialTarget_[m] += w->boundaryMass[m];
-      w->boundaryMass[m] = 0.0;
-    }
+  const Workspace* failed = nullptr;
+  for (const auto& w : work_)
+    if (w->failed && (failed == nullptr || w->failedLine < failed->failedLine)) failed = w.get();
+  if (failed != nullptr) {
+    const std::string msg = failed->message;
+    for (auto& v : work_) v->failed = false;
+    throw SimulationError(msg);
   }
-  for (auto& w : work_) {
-    if (w->failed) {
-      const std::string msg = w->message;
-      for (auto& v : work_) v->failed = false;
-      throw SimulationError(msg);
-    }
+  for (int line = 0; line < lines; ++line) {
+    const LineRecord& rec = lineRecords_[static_cast<std::size_t>(line)];
+    ledger_.boundary += rec.boundary;
+    ledger_.interfaces += rec.interfaces;
+    ledger_.floors += rec.floors;
+    for (int s = 0; s < 2; ++s)
+      if (rec.edgeMaterial[s] >= 0)
+        materialTarget_[static_cast<std::size_t>(rec.edgeMaterial[s])] += rec.edgeMass[s];
   }
 }
 

@@ -1,5 +1,6 @@
-//! @file The per-thread workspace of TvdSolver (sweep buffers and ledger accumulators).
+//! @file The per-thread workspace of TvdSolver (sweep buffers) and the per-line ledger record.
 #pragma once
+#include <array>
 #include <string>
 #include <vector>
 
@@ -11,10 +12,16 @@ namespace hvi::tvd {
 struct TvdSolver::Workspace {
   explicit Workspace(int lineCells) : line(lineCells) {}
   detail::LineWork line;
-  Budget boundary, interfaces, floors;
-  std::vector<double> boundaryMass;  // per material: mass in through the domain boundary
   bool failed = false;
+  int failedLine = 0;  // the lowest failed line this thread saw: the report does not depend on
+                       // the schedule
   std::string message;
+};
+
+struct TvdSolver::LineRecord {
+  Budget boundary, interfaces, floors;
+  std::array<double, 2> edgeMass{};  // mass in through the low and high domain edge
+  std::array<int, 2> edgeMaterial{-1, -1};
 };
 
 }  // namespace hvi::tvd

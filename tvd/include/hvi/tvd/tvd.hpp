@@ -110,6 +110,7 @@ class TvdSolver final : public Solver {
 
  private:
   struct Workspace;
+  struct LineRecord;
   void setUpGrid(const cases::Scene& scene);
   void setUpMaterials(const cases::Scene& scene);
   void initialiseState(const cases::Scene& scene);
@@ -176,6 +177,9 @@ class TvdSolver final : public Solver {
   // more than the work (and much more when the cores are shared).
   static constexpr long kParallelCells = 16384;
   std::vector<std::unique_ptr<Workspace>> work_;
+  // Per sweep line: what it booked to the ledger, summed in line order after the sweep so the
+  // totals (and the material targets they feed) do not depend on which thread ran which line.
+  std::vector<LineRecord> lineRecords_;
 };
 
 }  // namespace hvi::tvd
