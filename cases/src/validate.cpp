@@ -261,6 +261,22 @@ void checkRiemannSolution(const TableReader& root, const Scene& scene, const Sou
   }
 }
 
+// The debris-cloud features measure a striker against a shield (compare::featureConfigFromScene:
+// bodies so named, else the first body strikes the second); with one body every feature would
+// be null at every snapshot.
+void checkFeatures(const TableReader& root, const Scene& scene) {
+  if (!scene.has(Effect::Features) || scene.bodies.size() >= 2) return;
+  const toml::array* arr = root.find("effects") ? root.find("effects")->as_array() : nullptr;
+  std::size_t i = 0;
+  while (arr && i < arr->size() && arr->get(i)->value_or(std::string_view{}) != "features") ++i;
+  fail(root.ctx(), arr && i < arr->size() ? arr->get(i) : nullptr,
+       "effects[" + std::to_string(i) + "]",
+       "effect \"features\" needs a striker and a shield, but the scene has " +
+           std::to_string(scene.bodies.size()) + " body",
+       "two bodies or more (named \"striker\" and \"shield\", else the first strikes the "
+       "second), or no \"features\"");
+}
+
 }  // namespace
 
 void validateScene(const TableReader& root, const Scene& scene, const Sources& src) {
@@ -292,6 +308,7 @@ void validateScene(const TableReader& root, const Scene& scene, const Sources& s
   if (scene.solver == SolverKind::Sph) checkSphFill(root, scene, src);
   if (scene.solver == SolverKind::Tvd) checkTvdMaterials(root, scene, src);
   checkTimeResolution(root, scene);
+  checkFeatures(root, scene);
   if (scene.solver == SolverKind::Riemann) {
     checkRiemann(root, scene, src, tol);
     checkRiemannSolution(root, scene, src);
