@@ -15,7 +15,6 @@
 #endif
 
 #include "hvi/apps/output_folder.hpp"
-#include "hvi/apps/riemann_solver.hpp"
 #include "hvi/apps/run_record.hpp"
 #include "hvi/cases/load.hpp"
 #include "hvi/common/atomic_file.hpp"
@@ -26,6 +25,7 @@
 #include "hvi/io/output.hpp"
 #include "hvi/sph/sph.hpp"
 #include "hvi/tvd/tvd.hpp"
+#include "hvi/verify/riemann_solver.hpp"
 
 namespace hvi::app {
 namespace fs = std::filesystem;
@@ -35,7 +35,7 @@ std::unique_ptr<Solver> createSolver(const cases::Scene& scene) {
   switch (scene.solver) {
     case cases::SolverKind::Sph: return sph::createSolver(scene);
     case cases::SolverKind::Tvd: return tvd::createSolver(scene);
-    case cases::SolverKind::Riemann: return createRiemannSolver(scene);
+    case cases::SolverKind::Riemann: return verify::createRiemannSolver(scene);
   }
   throw InputError(scene.path + ": unknown solver");
 }

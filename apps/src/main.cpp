@@ -9,7 +9,33 @@
 #include "hvi/apps/driver.hpp"
 #include "hvi/cases/load.hpp"
 #include "hvi/common/error.hpp"
-#include "hvi/compare/cli.hpp"
+#include "hvi/compare/command.hpp"
+
+namespace {
+
+//! The options of `hvi compare` (CLI11 stays in this file: the libraries take plain options).
+void addCompareOptions(CLI::App& cmd, hvi::compare::CompareCliOptions& opt) {
+  cmd.add_option("--time,-t", opt.time,
+                 "Time (us) of the snapshot to take from a run folder (default: the last one)");
+  cmd.add_option("--time-tolerance", opt.timeTolerance,
+                 "How close (us) a snapshot's time must be to --time")
+      ->capture_default_str();
+  cmd.add_option("--spacing", opt.spacing,
+                 "Cell size (cm) of the common grid (default: the coarser native spacing)");
+  cmd.add_option("--out,-o", opt.out, "Folder for compare.json and compare_diff.vti")
+      ->capture_default_str();
+  cmd.add_option("--max-density-l1", opt.maxDensityL1,
+                 "Fail (exit 1) if the relative L1 density difference over the material region "
+                 "exceeds this");
+  cmd.add_option("--min-iou", opt.minIou,
+                 "Fail (exit 1) if the smallest object (or material) IoU is below this");
+  cmd.add_flag("--quiet,-q", opt.quiet, "Do not print the table");
+  cmd.add_flag("--force", opt.force,
+               "Compare snapshots of different scenes (bodies, materials or domain differ) whose "
+               "domains overlap");
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"hvi: hypervelocity impact with modified SPH and Eulerian TVD, and their comparison",
@@ -49,7 +75,7 @@ int main(int argc, char** argv) {
       "compare", "Compare two results (SPH vs TVD, or two runs) on one grid: density, material, features");
   cmpCmd->add_option("a", cmpA, "Snapshot (.h5) or run folder")->required();
   cmpCmd->add_option("b", cmpB, "Snapshot (.h5) or run folder")->required();
-  hvi::compare::addCliOptions(*cmpCmd, cmp);
+  addCompareOptions(*cmpCmd, cmp);
 
   // CLI11 reports a mistyped command as an unexpected argument; name it and the commands instead.
   const auto isCommand = [&](const std::string& name) {

@@ -11,33 +11,12 @@
 #include "hvi/cases/load.hpp"
 #include "hvi/common/atomic_file.hpp"
 #include "hvi/common/error.hpp"
-#include "hvi/compare/cli.hpp"
+#include "hvi/compare/command.hpp"
 #include "hvi/compare/compare.hpp"
 #include "hvi/io/output.hpp"
 
 namespace hvi::compare {
 namespace fs = std::filesystem;
-
-void addCliOptions(CLI::App& cmd, CompareCliOptions& opt) {
-  cmd.add_option("--time,-t", opt.time,
-                 "Time (us) of the snapshot to take from a run folder (default: the last one)");
-  cmd.add_option("--time-tolerance", opt.timeTolerance,
-                 "How close (us) a snapshot's time must be to --time")
-      ->capture_default_str();
-  cmd.add_option("--spacing", opt.spacing,
-                 "Cell size (cm) of the common grid (default: the coarser native spacing)");
-  cmd.add_option("--out,-o", opt.out, "Folder for compare.json and compare_diff.vti")
-      ->capture_default_str();
-  cmd.add_option("--max-density-l1", opt.maxDensityL1,
-                 "Fail (exit 1) if the relative L1 density difference over the material region "
-                 "exceeds this");
-  cmd.add_option("--min-iou", opt.minIou,
-                 "Fail (exit 1) if the smallest object (or material) IoU is below this");
-  cmd.add_flag("--quiet,-q", opt.quiet, "Do not print the table");
-  cmd.add_flag("--force", opt.force,
-               "Compare snapshots of different scenes (bodies, materials or domain differ) whose "
-               "domains overlap");
-}
 
 namespace {
 //! The snapshots a run folder's record lists, in order: (time, file). timeseries.json is

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <fstream>
 #include <streambuf>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -176,25 +177,6 @@ std::uint64_t fnv1a64(const void* data, std::size_t bytes, std::uint64_t hash) {
     hash *= 1099511628211ULL;
   }
   return hash;
-}
-
-void writeString(std::ostream& out, const std::string& s) {
-  writeValue<std::uint64_t>(out, s.size());
-  out.write(s.data(), static_cast<std::streamsize>(s.size()));
-}
-
-std::string readString(std::istream& in) {
-  const auto n = readValue<std::uint64_t>(in);
-  std::string s;
-  // Same block-wise growth as readArray: a bogus length fails on the stream, not on memory.
-  for (std::uint64_t done = 0; done < n;) {
-    const std::uint64_t m = std::min<std::uint64_t>(bufferBytes, n - done);
-    s.resize(static_cast<std::size_t>(done + m));
-    in.read(s.data() + done, static_cast<std::streamsize>(m));
-    if (!in) throw InputError("checkpoint body ends inside a string");
-    done += m;
-  }
-  return s;
 }
 
 void writeCheckpointFile(const fs::path& file, const std::string& header,

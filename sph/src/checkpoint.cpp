@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "detail/stepper_impl.hpp"
+#include "hvi/common/binary.hpp"
 #include "hvi/common/error.hpp"
 
 namespace hvi::sph {
@@ -16,24 +17,12 @@ constexpr char kMagic[8] = {'H', 'V', 'I', 'S', 'P', 'H', '0', '2'};
 // step sets again.
 constexpr char kMagicV1[8] = {'H', 'V', 'I', 'S', 'P', 'H', '0', '1'};
 
-template <class T>
-void put(std::ostream& out, const T& v) {
-  out.write(reinterpret_cast<const char*>(&v), sizeof(T));
-}
-template <class T>
-void putArray(std::ostream& out, const std::vector<T>& v, std::size_t n) {
-  out.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(n * sizeof(T)));
-}
-template <class T>
-T get(std::istream& in) {
-  T v{};
-  in.read(reinterpret_cast<char*>(&v), sizeof(T));
-  return v;
-}
-template <class T>
-void getArray(std::istream& in, std::vector<T>& v, std::size_t n) {
-  v.resize(n);
-  in.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n * sizeof(T)));
+// The per-particle arrays in checkpoint order. The particle count is stored once before them,
+// so they go without counts.
+template <class State, class F>
+void forEachArray(State& s, F&& f) {
+  f(s.a.x), f(s.a.z), f(s.a.vx), f(s.a.vz), f(s.a.h), f(s.a.obj);
+  f(s.e), f(s.m), f(s.rhoRef), f(s.mat), f(s.id);
 }
 
 }  // namespace
@@ -43,70 +32,45 @@ void getArray(std::istream& in, std::vector<T>& v, std::size_t n) {
 // them, and hence every later step, bit for bit.
 void Stepper::writeState(std::ostream& out) const {
   const Impl& s = *impl_;
-  out.write(kMagic, sizeof kMagic);
-  put<std::uint64_t>(out, s.n);
-  put<std::int32_t>(out, static_cast<std::int32_t>(s.cfg.geometry));
-  put<std::int32_t>(out, static_cast<std::int32_t>(s.materials.size()));
-  put(out, s.t);
-  put<std::int64_t>(out, s.steps);
-  put(out, s.dt0);
-  put(out, s.out.mass);
-  put(out, s.out.momentumX);
-  put(out, s.out.momentumZ);
-  put(out, s.out.kinetic);
-  put(out, s.out.internal);
-  putArray(out, s.a.x, s.n);
-  putArray(out, s.a.z, s.n);
-  putArray(out, s.a.vx, s.n);
-  putArray(out, s.a.vz, s.n);
-  putArray(out, s.a.h, s.n);
-  putArray(out, s.a.obj, s.n);
-  putArray(out, s.e, s.n);
-  putArray(out, s.m, s.n);
-  putArray(out, s.rhoRef, s.n);
-  putArray(out, s.mat, s.n);
-  putArray(out, s.id, s.n);
-  if (!out) throw SimulationError("SPH checkpoint: write failed");
+  BinaryWriter w(out, "SPH checkpoint");
+  w.bytes(kMagic, sizeof kMagic);
+  w.value<std::uint64_t>(s.n);
+  w.value<std::int32_t>(static_cast<std::int32_t>(s.cfg.geometry));
+  w.value<std::int32_t>(static_cast<std::int32_t>(s.materials.size()));
+  w.value(s.t);
+  w.value<std::int64_t>(s.steps);
+  w.value(s.dt0);
+  for (double v : {s.out.mass, s.out.momentumX, s.out.momentumZ, s.out.kinetic, s.out.internal})
+    w.value(v);
+  forEachArray(s, [&](const auto& v) { w.elements(v.data(), s.n); });
 }
 
 void Stepper::readState(std::istream& in) {
   Impl& s = *impl_;
+  BinaryReader r(in, "SPH checkpoint");
   char magic[sizeof kMagic];
-  in.read(magic, sizeof magic);
-  const bool v1 = in && std::memcmp(magic, kMagicV1, sizeof kMagicV1) == 0;
-  if (!in || (!v1 && std::memcmp(magic, kMagic, sizeof kMagic) != 0))
+  r.bytes(magic, sizeof magic, "the magic");
+  const bool v1 = std::memcmp(magic, kMagicV1, sizeof kMagicV1) == 0;
+  if (!v1 && std::memcmp(magic, kMagic, sizeof kMagic) != 0)
     throw InputError("SPH checkpoint: not an hvi SPH state (bad magic)");
-  const auto n = get<std::uint64_t>(in);
-  const auto geom = get<std::int32_t>(in);
-  const auto nmat = get<std::int32_t>(in);
+  const auto n = r.value<std::uint64_t>();
+  const auto geom = r.value<std::int32_t>();
+  const auto nmat = r.value<std::int32_t>();
   if (geom != static_cast<std::int32_t>(s.cfg.geometry) ||
       nmat != static_cast<std::int32_t>(s.materials.size()))
     throw InputError(fmt::format(
         "SPH checkpoint: written for geometry {} with {} materials, but the scene has "
         "geometry {} with {} materials; restart with the scene that wrote it",
         geom, nmat, static_cast<int>(s.cfg.geometry), s.materials.size()));
-  s.t = get<double>(in);
-  s.steps = get<std::int64_t>(in);
-  s.dt0 = v1 ? 0.0 : get<double>(in);
-  s.out.mass = get<double>(in);
-  s.out.momentumX = get<double>(in);
-  s.out.momentumZ = get<double>(in);
-  s.out.kinetic = get<double>(in);
-  s.out.internal = get<double>(in);
+  s.t = r.value<double>();
+  s.steps = r.value<std::int64_t>();
+  s.dt0 = v1 ? 0.0 : r.value<double>();
+  for (double* v : {&s.out.mass, &s.out.momentumX, &s.out.momentumZ, &s.out.kinetic,
+                    &s.out.internal})
+    *v = r.value<double>();
   s.n = n;
   s.a.resize(n);
-  getArray(in, s.a.x, n);
-  getArray(in, s.a.z, n);
-  getArray(in, s.a.vx, n);
-  getArray(in, s.a.vz, n);
-  getArray(in, s.a.h, n);
-  getArray(in, s.a.obj, n);
-  getArray(in, s.e, n);
-  getArray(in, s.m, n);
-  getArray(in, s.rhoRef, n);
-  getArray(in, s.mat, n);
-  getArray(in, s.id, n);
-  if (!in) throw InputError("SPH checkpoint: truncated");
+  forEachArray(s, [&](auto& v) { r.elements(v, n); });
   for (int k : s.mat)
     if (k < 0 || k >= nmat) throw InputError("SPH checkpoint: material index out of range");
   for (auto* v : {&s.x0, &s.z0, &s.vx0, &s.vz0, &s.e0, &s.rho0, &s.ax0, &s.az0, &s.de0,

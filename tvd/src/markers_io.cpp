@@ -9,6 +9,7 @@
 #include <numbers>
 #include <ostream>
 
+#include "hvi/common/binary.hpp"
 #include "hvi/common/error.hpp"
 #include "hvi/tvd/markers.hpp"
 #include "markers_internal.hpp"
@@ -18,18 +19,6 @@ namespace {
 
 constexpr std::array<char, 8> kMagic{'H', 'V', 'I', 'M', 'R', 'K', '0', '1'};
 constexpr std::uint32_t kVersion = 1;
-
-template <class T>
-void put(std::ostream& os, const T& v) {
-  os.write(reinterpret_cast<const char*>(&v), sizeof(T));
-}
-template <class T>
-T get(std::istream& is) {
-  T v{};
-  is.read(reinterpret_cast<char*>(&v), sizeof(T));
-  if (!is) throw InputError("marker checkpoint: stream ended early");
-  return v;
-}
 
 }  // namespace
 
@@ -63,57 +52,48 @@ std::size_t MarkerSet::size() const {
 
 // Native byte order: a checkpoint is read back by the same build on the same machine.
 void MarkerSet::write(std::ostream& os) const {
-  os.write(kMagic.data(), kMagic.size());
-  put(os, kVersion);
-  put(os, static_cast<std::int32_t>(geometry_ == Geometry::Axisymmetric ? 1 : 0));
-  put(os, static_cast<std::int32_t>(objects_));
-  put(os, spacingCells_);
-  put(os, minCells_);
-  put(os, maxCells_);
-  put(os, tinyLoopCells_);
-  put(os, static_cast<std::uint64_t>(lines_.size()));
+  BinaryWriter w(os, "marker checkpoint");
+  w.bytes(kMagic.data(), kMagic.size());
+  w.value(kVersion);
+  w.value(static_cast<std::int32_t>(geometry_ == Geometry::Axisymmetric ? 1 : 0));
+  w.value(static_cast<std::int32_t>(objects_));
+  for (double v : {spacingCells_, minCells_, maxCells_, tinyLoopCells_}) w.value(v);
+  w.value(static_cast<std::uint64_t>(lines_.size()));
   for (const auto& l : lines_) {
-    put(os, static_cast<std::int32_t>(l.object));
-    put(os, static_cast<std::uint8_t>(l.closed ? 1 : 0));
-    put(os, static_cast<std::uint64_t>(l.points.size()));
-    os.write(reinterpret_cast<const char*>(l.points.data()),
-             static_cast<std::streamsize>(l.points.size() * sizeof(Vec2)));
+    w.value(static_cast<std::int32_t>(l.object));
+    w.value(static_cast<std::uint8_t>(l.closed ? 1 : 0));
+    w.array(l.points);
   }
-  if (!os) throw SimulationError("marker checkpoint: write failed");
 }
 
 void MarkerSet::read(std::istream& is) {
+  BinaryReader r(is, "marker checkpoint");
   std::array<char, 8> magic{};
-  is.read(magic.data(), magic.size());
-  if (!is || magic != kMagic) throw InputError("marker checkpoint: not a marker-set record");
-  if (const auto v = get<std::uint32_t>(is); v != kVersion)
+  r.bytes(magic.data(), magic.size(), "the magic");
+  if (magic != kMagic) throw InputError("marker checkpoint: not a marker-set record");
+  if (const auto v = r.value<std::uint32_t>(); v != kVersion)
     throw InputError(
         fmt::format("marker checkpoint: version {} (this build reads {})", v, kVersion));
   MarkerSet s;
-  const auto geom = get<std::int32_t>(is);
-  s.objects_ = get<std::int32_t>(is);
-  s.spacingCells_ = get<double>(is);
-  s.minCells_ = get<double>(is);
-  s.maxCells_ = get<double>(is);
-  s.tinyLoopCells_ = get<double>(is);
+  const auto geom = r.value<std::int32_t>();
+  s.objects_ = r.value<std::int32_t>();
+  for (double* v : {&s.spacingCells_, &s.minCells_, &s.maxCells_, &s.tinyLoopCells_})
+    *v = r.value<double>();
   if ((geom != 0 && geom != 1) || s.objects_ < 0 || !(s.spacingCells_ > 0.0) ||
       !(s.minCells_ > 0.0) || !(s.maxCells_ >= 2.0 * s.minCells_))
     throw InputError("marker checkpoint: corrupt header");
   s.geometry_ = geom == 1 ? Geometry::Axisymmetric : Geometry::Planar;
-  const auto nlines = get<std::uint64_t>(is);
+  const auto nlines = r.count();
   constexpr std::uint64_t kLimit = std::uint64_t{1} << 32;  // guards against corrupt counts
   if (nlines > kLimit) throw InputError("marker checkpoint: corrupt line count");
   s.lines_.resize(nlines);
   for (auto& l : s.lines_) {
-    l.object = get<std::int32_t>(is);
-    l.closed = get<std::uint8_t>(is) != 0;
-    const auto n = get<std::uint64_t>(is);
+    l.object = r.value<std::int32_t>();
+    l.closed = r.value<std::uint8_t>() != 0;
+    const auto n = r.count();
     if (n > kLimit || l.object < 0 || l.object >= s.objects_)
       throw InputError("marker checkpoint: corrupt line record");
-    l.points.resize(n);
-    is.read(reinterpret_cast<char*>(l.points.data()),
-            static_cast<std::streamsize>(n * sizeof(Vec2)));
-    if (!is) throw InputError("marker checkpoint: stream ended inside a line");
+    r.elements(l.points, n, "a line");
   }
   lines_ = std::move(s.lines_);
   objects_ = s.objects_;

@@ -11,7 +11,7 @@
 
 #include "hvi/apps/driver.hpp"
 #include "hvi/cases/load.hpp"
-#include "hvi/compare/cli.hpp"
+#include "hvi/compare/command.hpp"
 #include "hvi/compare/compare.hpp"
 
 namespace hvi::compare::regression {

@@ -7,7 +7,7 @@
 #include "hvi/sph/sph.hpp"
 #include "hvi/verify/noh.hpp"
 #include "hvi/verify/riemann.hpp"
-#include "sph_test_scenes.hpp"
+#include "hvi/test/sph_test_scenes.hpp"
 
 namespace hvi::sph {
 namespace {

@@ -8,7 +8,7 @@
 
 #include "hvi/verify/noh.hpp"
 #include "hvi/verify/sedov.hpp"
-#include "tvd_scenes.hpp"
+#include "hvi/test/tvd_scenes.hpp"
 
 namespace hvi::tvd {
 namespace {

@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "hvi/verify/riemann.hpp"
-#include "tvd_scenes.hpp"
+#include "hvi/test/tvd_scenes.hpp"
 
 namespace hvi::tvd {
 namespace {

@@ -12,8 +12,8 @@
 
 #include "hvi/cases/load.hpp"
 #include "hvi/common/error.hpp"
-#include "scene_files.hpp"
-#include "scene_mutate.hpp"
+#include "hvi/test/scene_files.hpp"
+#include "hvi/test/scene_mutate.hpp"
 
 namespace hvi::cases {
 namespace {

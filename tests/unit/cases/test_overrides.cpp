@@ -3,7 +3,7 @@
 
 #include "hvi/cases/load.hpp"
 #include "hvi/common/error.hpp"
-#include "scene_files.hpp"
+#include "hvi/test/scene_files.hpp"
 
 namespace hvi::cases {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "hvi/cases/load.hpp"
 #include "hvi/cases/names.hpp"
-#include "scene_files.hpp"
+#include "hvi/test/scene_files.hpp"
 
 namespace hvi::cases {
 namespace test {

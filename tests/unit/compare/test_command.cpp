@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "hvi/compare/cli.hpp"
+#include "hvi/compare/command.hpp"
 #include "hvi/io/output.hpp"
 #include "synthetic.hpp"
 

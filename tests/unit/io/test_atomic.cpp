@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "hvi/common/atomic_file.hpp"
+#include "hvi/common/binary.hpp"
 #include "hvi/common/error.hpp"
 #include "hvi/io/checkpoint.hpp"
 #include "hvi/io/output.hpp"
@@ -27,16 +28,20 @@ namespace fs = std::filesystem;
 
 TEST(Atomic, ThrowingCheckpointBodyLeavesOldFileAndNoTemporary) {
   ScratchDir dir;
-  writeCheckpointFile(dir / "c.ckpt", "old", [](std::ostream& out) { writeValue(out, 1.5); });
+  writeCheckpointFile(dir / "c.ckpt", "old",
+                      [](std::ostream& out) { BinaryWriter(out, "test body").value(1.5); });
   const std::vector<double> lots(1 << 18, 2.0);  // past the stream buffers: bytes reach the disk
   EXPECT_THROW(writeCheckpointFile(dir / "c.ckpt", "new",
                                    [&](std::ostream& out) {
-                                     writeArray(out, lots);
+                                     BinaryWriter(out, "test body").array(lots);
                                      throw std::runtime_error("solver failed mid-checkpoint");
                                    }),
                std::runtime_error);
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"c.ckpt"});
-  EXPECT_EQ(readCheckpointFile(dir / "c.ckpt", [](std::istream& in) { EXPECT_EQ(readValue<double>(in), 1.5); }),
+  EXPECT_EQ(readCheckpointFile(dir / "c.ckpt",
+                               [](std::istream& in) {
+                                 EXPECT_EQ(BinaryReader(in, "test body").value<double>(), 1.5);
+                               }),
             "old");
 }
 
@@ -130,15 +135,19 @@ TEST(Atomic, SnapshotWriteKilledMidwayLeavesACompleteFile) {
 TEST(Atomic, CheckpointWriteKilledMidwayLeavesACompleteFile) {
   ScratchDir dir;
   const fs::path target = dir / "run.ckpt";
-  writeCheckpointFile(target, "old", [](std::ostream& out) { writeValue(out, 7L); });
+  writeCheckpointFile(target, "old",
+                      [](std::ostream& out) { BinaryWriter(out, "test body").value(7L); });
   const std::vector<double> state(8'000'000, 3.25);  // 64 MB
   const auto [completed, size] = killMidWrite(target, [&] {
-    writeCheckpointFile(target, "new", [&](std::ostream& out) { writeArray(out, state); });
+    writeCheckpointFile(target, "new",
+                        [&](std::ostream& out) { BinaryWriter(out, "test body").array(state); });
   });
   EXPECT_GT(size, 1u << 20);
   const std::string header = readCheckpointFile(target, [&](std::istream& in) {
-    if (completed == 0) EXPECT_EQ(readValue<long>(in), 7L);
-    else EXPECT_EQ(readArray<double>(in), state);
+    if (completed == 0)
+      EXPECT_EQ(BinaryReader(in, "test body").value<long>(), 7L);
+    else
+      EXPECT_EQ(BinaryReader(in, "test body").array<double>(), state);
   });
   EXPECT_EQ(header, completed == 0 ? "old" : "new");
 }
@@ -191,16 +200,15 @@ TEST(Atomic, FullDiskTextWriteNamesFileAndCauseAndKeepsOldFile) {
 
 TEST(Atomic, FullDiskCheckpointNamesFileAndCauseAndKeepsOldCheckpoint) {
   ScratchDir dir;
-  writeCheckpointFile(dir / "checkpoint.bin", "old", [](std::ostream& out) { writeValue(out, 7L); });
+  writeCheckpointFile(dir / "checkpoint.bin", "old",
+                      [](std::ostream& out) { BinaryWriter(out, "test body").value(7L); });
   const std::vector<double> state(1 << 16, 1.0);
   try {
     FileSizeLimit full(8192);
-    // A solver that sees its stream fail throws its own vague error ("SPH checkpoint: write
+    // The body's writer sees its stream fail and throws its own vague error ("...: write
     // failed"); the container must replace it by the file and the system's reason.
-    writeCheckpointFile(dir / "checkpoint.bin", "new", [&](std::ostream& out) {
-      writeArray(out, state);
-      if (!out) throw SimulationError("SPH checkpoint: write failed");
-    });
+    writeCheckpointFile(dir / "checkpoint.bin", "new",
+                        [&](std::ostream& out) { BinaryWriter(out, "test body").array(state); });
     ADD_FAILURE() << "a checkpoint past the file size limit was written";
   } catch (const OutputError& e) {
     const std::string what = e.what();
@@ -209,7 +217,9 @@ TEST(Atomic, FullDiskCheckpointNamesFileAndCauseAndKeepsOldCheckpoint) {
   }
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"checkpoint.bin"});
   EXPECT_EQ(readCheckpointFile(dir / "checkpoint.bin",
-                               [](std::istream& in) { EXPECT_EQ(readValue<long>(in), 7L); }),
+                               [](std::istream& in) {
+                                 EXPECT_EQ(BinaryReader(in, "test body").value<long>(), 7L);
+                               }),
             "old");
 }
 

@@ -1,9 +1,11 @@
 //! @file Checkpoint container: exact round trip; truncation, corruption and mismatch detected.
 #include <fstream>
 #include <numeric>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
+#include "hvi/common/binary.hpp"
 #include "hvi/common/error.hpp"
 #include "hvi/io/checkpoint.hpp"
 #include "test_support.hpp"
@@ -23,19 +25,21 @@ std::vector<double> bodyData(std::size_t n) {
 
 void writeSample(const fs::path& file, std::size_t n = 100000) {
   writeCheckpointFile(file, header, [&](std::ostream& out) {
-    writeValue<long>(out, 1234);
-    writeArray(out, bodyData(n));
-    writeString(out, "tail");
+    BinaryWriter w(out, "test body");
+    w.value<long>(1234);
+    w.array(bodyData(n));
+    w.string("tail");
   });
 }
 
 void readSample(std::istream& in, std::size_t n = 100000) {
-  EXPECT_EQ(readValue<long>(in), 1234);
-  const auto v = readArray<double>(in);
+  BinaryReader r(in, "test body");
+  EXPECT_EQ(r.value<long>(), 1234);
+  const auto v = r.array<double>();
   ASSERT_EQ(v.size(), n);
   const auto expected = bodyData(n);
   for (std::size_t i = 0; i < n; ++i) ASSERT_TRUE(sameBits(v[i], expected[i])) << i;
-  EXPECT_EQ(readString(in), "tail");
+  EXPECT_EQ(r.string(), "tail");
 }
 
 std::string inputErrorOf(const fs::path& file, const std::function<void(std::istream&)>& body) {
@@ -130,14 +134,68 @@ TEST(Checkpoint, ReaderThatDoesNotMatchTheWriterIsRejected) {
   ScratchDir dir;
   writeSample(dir / "c.ckpt", 10);
   // Reads less than was written: a solver whose state layout changed.
-  EXPECT_NE(inputErrorOf(dir / "c.ckpt", [](std::istream& in) { readValue<long>(in); }).find("left unread"),
-            std::string::npos);
+  const auto readOne = [](std::istream& in) { BinaryReader(in, "test body").value<long>(); };
+  EXPECT_NE(inputErrorOf(dir / "c.ckpt", readOne).find("left unread"), std::string::npos);
   // Reads more: stops at the body's end, never in the trailer.
   const std::string msg = inputErrorOf(dir / "c.ckpt", [](std::istream& in) {
     readSample(in, 10);
-    readValue<double>(in);
+    BinaryReader(in, "test body").value<double>();
   });
   EXPECT_NE(msg.find("ends inside a value"), std::string::npos) << msg;
+}
+
+// The one binary reader and writer of all checkpoint bodies (hvi/common/binary.hpp).
+TEST(BinaryIo, RoundTripIsExactAndLayoutIsCountThenElements) {
+  std::stringstream buf;
+  BinaryWriter w(buf, "test body");
+  w.value<std::int32_t>(-7);
+  w.array(std::vector<double>{-0.0, 1.5});
+  const std::vector<int> raw{1, 2, 3};
+  w.elements(raw.data(), raw.size());
+  w.string("abc");
+  EXPECT_EQ(buf.str().size(), 4u + 8 + 16 + 12 + 8 + 3);
+  BinaryReader r(buf, "test body");
+  EXPECT_EQ(r.value<std::int32_t>(), -7);
+  const auto v = r.array<double>();
+  ASSERT_EQ(v.size(), 2u);
+  EXPECT_TRUE(sameBits(v[0], -0.0));
+  std::vector<int> back;
+  r.elements(back, 3);
+  EXPECT_EQ(back, raw);
+  EXPECT_EQ(r.string(), "abc");
+}
+
+TEST(BinaryIo, ShortStreamsWrongCountsAndFailedWritesAreErrors) {
+  const auto messageOf = [](const std::string& bytes, auto read) {
+    std::stringstream in(bytes);
+    BinaryReader r(in, "test body");
+    try {
+      read(r);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(messageOf("abc", [](BinaryReader& r) { r.value<double>(); }),
+            "test body: the stream ends inside a value");
+  std::stringstream two;
+  BinaryWriter(two, "test body").array(std::vector<double>{1.0, 2.0});
+  EXPECT_NE(messageOf(two.str(),
+                      [](BinaryReader& r) {
+                        std::vector<double> v;
+                        r.array(v, 3, "density");
+                      })
+                .find("array 'density' has 2 values, this run has 3"),
+            std::string::npos);
+  const std::uint64_t huge = std::uint64_t(1) << 62;
+  const std::string hugeCount(reinterpret_cast<const char*>(&huge), sizeof huge);
+  EXPECT_NE(messageOf(hugeCount, [](BinaryReader& r) { r.array<double>(); }).find("implausible"),
+            std::string::npos);
+  EXPECT_NE(messageOf(hugeCount, [](BinaryReader& r) { r.string(); }).find("implausible"),
+            std::string::npos);
+  std::ostringstream failed;
+  failed.setstate(std::ios::badbit);
+  EXPECT_THROW(BinaryWriter(failed, "test body").value(1.0), OutputError);
 }
 
 }  // namespace

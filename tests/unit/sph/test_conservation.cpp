@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "hvi/sph/sph.hpp"
-#include "sph_test_scenes.hpp"
+#include "hvi/test/sph_test_scenes.hpp"
 
 namespace hvi::sph {
 namespace {

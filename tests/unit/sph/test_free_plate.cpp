@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "hvi/sph/sph.hpp"
-#include "sph_test_scenes.hpp"
+#include "hvi/test/sph_test_scenes.hpp"
 
 namespace hvi::sph {
 namespace {

@@ -13,7 +13,7 @@
 #include "hvi/sph/kernel.hpp"
 #include "hvi/sph/mass_adjust.hpp"
 #include "hvi/sph/stepper.hpp"
-#include "sph_test_scenes.hpp"
+#include "hvi/test/sph_test_scenes.hpp"
 
 namespace hvi::sph {
 namespace {

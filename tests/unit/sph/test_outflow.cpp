@@ -10,7 +10,7 @@
 
 #include "hvi/sph/neighbours.hpp"
 #include "hvi/sph/sph.hpp"
-#include "sph_test_scenes.hpp"
+#include "hvi/test/sph_test_scenes.hpp"
 
 namespace hvi::sph {
 namespace {

@@ -5,7 +5,7 @@
 #include <map>
 
 #include "hvi/sph/sph.hpp"
-#include "sph_test_scenes.hpp"
+#include "hvi/test/sph_test_scenes.hpp"
 
 namespace hvi::sph {
 namespace {

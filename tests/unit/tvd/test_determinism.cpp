@@ -8,7 +8,7 @@
 
 #include <sstream>
 
-#include "tvd_scenes.hpp"
+#include "hvi/test/tvd_scenes.hpp"
 
 namespace hvi::tvd {
 namespace {

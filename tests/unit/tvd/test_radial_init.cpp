@@ -5,7 +5,7 @@
 
 #include "hvi/common/stop_flag.hpp"
 
-#include "tvd_scenes.hpp"
+#include "hvi/test/tvd_scenes.hpp"
 
 namespace hvi::tvd {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "tvd_scenes.hpp"
+#include "hvi/test/tvd_scenes.hpp"
 
 namespace hvi::tvd {
 namespace {

@@ -1,4 +1,4 @@
-//! @file The exact Riemann solution behind the Solver interface (apps/src/riemann_solver.cpp).
+//! @file The exact Riemann solution behind the Solver interface (verify/src/riemann_solver.cpp).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -6,9 +6,9 @@
 #include <unistd.h>
 
 #include "hvi/apps/driver.hpp"
-#include "hvi/apps/riemann_solver.hpp"
 #include "hvi/cases/load.hpp"
 #include "hvi/common/stop_flag.hpp"
+#include "hvi/verify/riemann_solver.hpp"
 
 namespace hvi::app {
 namespace {
@@ -56,7 +56,7 @@ TEST(RiemannSolver, BodiesInEitherOrderGiveTheSameSolution) {
   for (const double t : {0.0, 0.1}) {
     std::vector<std::vector<double>> rho;
     for (const bool leftFirst : {true, false}) {
-      auto solver = createRiemannSolver(cases::parseScene(sod(leftFirst), "sod.toml"));
+      auto solver = verify::createRiemannSolver(cases::parseScene(sod(leftFirst), "sod.toml"));
       if (t > 0.0) (void)solver->advance(t);
       const Snapshot s = solver->snapshot();
       const Field* d = s.find("density");
@@ -80,7 +80,7 @@ TEST(RiemannSolver, StopDuringSetUpExits130WithoutCheckpoint) {
   o.out = dir / "out";
   o.quiet = true;
   const int rc = runScene(o, [](const cases::Scene& scene) -> std::unique_ptr<Solver> {
-    auto solver = createRiemannSolver(scene);  // the real set-up, then the signal arrives
+    auto solver = verify::createRiemannSolver(scene);  // the real set-up, then the signal arrives
     requestStop();
     throwIfStopRequested("the test's set-up");
     return solver;

@@ -3,12 +3,11 @@
 #include <filesystem>
 #include <optional>
 
-#include <CLI/CLI.hpp>
-
 #include "hvi/common/snapshot.hpp"
 
 namespace hvi::compare {
 
+//! The options of `hvi compare`; the command line itself is parsed in apps/src/main.cpp.
 struct CompareCliOptions {
   std::optional<double> time;        //!< us: pick the snapshot at this time in a run folder
   double timeTolerance = 1e-3;       //!< us: how close a snapshot's time must be to `time`
@@ -21,9 +20,6 @@ struct CompareCliOptions {
   //! overlap; without it they are refused as unrelated problems.
   bool force = false;
 };
-
-//! Adds the options above to the `compare` subcommand.
-void addCliOptions(CLI::App& cmd, CompareCliOptions& opt);
 
 //! A snapshot file, or the snapshot of a run folder at `time` (within `tolerance`) or the last
 //! one. A run folder's snapshots are those its own record (timeseries.json) lists, never other

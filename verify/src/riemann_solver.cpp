@@ -1,14 +1,15 @@
 //! @file Exact Riemann solution sampled on a 1-D grid, behind the Solver interface.
-#include "hvi/apps/riemann_solver.hpp"
+#include "hvi/verify/riemann_solver.hpp"
 
 #include <istream>
 #include <ostream>
 #include <variant>
 
+#include "hvi/common/binary.hpp"
 #include "hvi/common/error.hpp"
 #include "hvi/verify/riemann.hpp"
 
-namespace hvi::app {
+namespace hvi::verify {
 namespace {
 
 class RiemannSolver final : public Solver {
@@ -23,9 +24,9 @@ class RiemannSolver final : public Solver {
     if (r0 && r1 && r1->xmin < r0->xmin) left_ = 1;
     const auto& l = s.bodies[left_];
     const auto& r = s.bodies[1 - left_];
-    exact_ = std::make_unique<verify::ExactRiemann>(
-        s.materials[l.material].eos, verify::RiemannState{l.density, l.velocity.x, l.specificEnergy},
-        s.materials[r.material].eos, verify::RiemannState{r.density, r.velocity.x, r.specificEnergy});
+    exact_ = std::make_unique<ExactRiemann>(
+        s.materials[l.material].eos, RiemannState{l.density, l.velocity.x, l.specificEnergy},
+        s.materials[r.material].eos, RiemannState{r.density, r.velocity.x, r.specificEnergy});
     grid_.nx = s.riemann.cells;
     grid_.nz = 1;
     grid_.x0 = s.domain.xmin;
@@ -91,16 +92,18 @@ class RiemannSolver final : public Solver {
   }
 
   void writeCheckpoint(std::ostream& out) const override {
-    out.write(reinterpret_cast<const char*>(&t_), sizeof t_);
-    out.write(reinterpret_cast<const char*>(&step_), sizeof step_);
+    BinaryWriter w(out, "riemann checkpoint");
+    w.value(t_);
+    w.value(step_);
   }
   void readCheckpoint(std::istream& in) override {
-    in.read(reinterpret_cast<char*>(&t_), sizeof t_);
-    in.read(reinterpret_cast<char*>(&step_), sizeof step_);
+    BinaryReader r(in, "riemann checkpoint");
+    t_ = r.value<double>();
+    step_ = r.value<long>();
   }
 
  private:
-  verify::RiemannSample cell(long i) const {
+  RiemannSample cell(long i) const {
     const double x = grid_.x0 + (i + 0.5) * grid_.dx;
     const double dt = t_ - scene_.tStart;
     const double d = x - scene_.riemann.interface;
@@ -114,7 +117,7 @@ class RiemannSolver final : public Solver {
 
   cases::Scene scene_;
   std::size_t left_ = 0;  //!< index of the left body in scene_.bodies
-  std::unique_ptr<verify::ExactRiemann> exact_;
+  std::unique_ptr<ExactRiemann> exact_;
   GridSpec grid_;
   double t_;
   long step_ = 0;
@@ -126,4 +129,4 @@ std::unique_ptr<Solver> createRiemannSolver(const cases::Scene& scene) {
   return std::make_unique<RiemannSolver>(scene);
 }
 
-}  // namespace hvi::app
+}  // namespace hvi::verify
