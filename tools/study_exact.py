@@ -174,7 +174,8 @@ def selftest():
     return ok
 
 
-# The study's Tillotson aluminium (METHOD.md section 2; eos/include/hvi/eos/tillotson.hpp).
+# The study's Tillotson aluminium (spec section 2, docs/method.md;
+# eos/include/hvi/eos/tillotson.hpp).
 TILLOTSON_AL = {"rho0": 2.79, "a": 0.5, "b": 1.63, "A": 0.75, "B": 0.65, "e0": 0.05}
 
 

@@ -22,15 +22,15 @@ PROBLEMS = {
         "scene": os.path.join(SCENES, "sod_x.toml"), "bodies": 2, "end": 0.2,
         "window": (0.1, 0.9), "exact": ("python", lambda x, t: ex.sod_density(x, t)),
         "effects": {"tvd": [], "sph": SPH_EFFECTS_1D},
-        # h is constant per body (METHOD.md section 3), and the rarefaction stretches the left
-        # gas 2.35 times along x (rho 1 -> 0.426) while the rows keep their spacing: with the
+        # h is constant per body (spec section 3, docs/method.md), and the rarefaction stretches the
+        # left gas 2.35 times along x (rho 1 -> 0.426) while the rows keep their spacing: with the
         # scene's h = 1 dx the stretched particles sit ~2.3 h apart, beyond the Gaussian's reach
-        # (the pair force ~ r exp(-r^2/h^2)), the fan cannot push the gas apart and the star
-        # state comes out wrong at every resolution (rho*L 0.61, p* 0.50, u* 0.74 at h = 0.005
-        # cm). h = 1.5 dx is the widest kernel at which modified SPH starts (at 2 dx the mass
-        # iteration does not converge: the kernel's transform at the lattice's Nyquist mode is
-        # 5e-5); traditional SPH also runs at 2 dx, where the star state is right to 1 %, and
-        # the modified scheme at the scene's 1 dx shows the failure. The same settings as
+        # (the pair force ~ r exp(-r^2/h^2)), the fan cannot push the gas apart and the star state
+        # comes out wrong at every resolution (rho*L 0.61, p* 0.50, u* 0.74 at h = 0.005 cm). h =
+        # 1.5 dx is the widest kernel at which modified SPH starts (at 2 dx the mass iteration does
+        # not converge: the kernel's transform at the lattice's Nyquist mode is 5e-5); traditional
+        # SPH also runs at 2 dx, where the star state is right to 1 %, and the modified scheme at
+        # the scene's 1 dx shows the failure. The same settings as
         # tests/regression/sph/test_sph_verification.cpp (SodShockTubeConverges).
         "sph_h_factor": 1.5,
         "sph_extra": [("gaussian", 1.0, False, 2.0), ("gaussian", 1.0, True, 1.0)],

@@ -12,7 +12,7 @@ constexpr std::array<std::string_view, 4> kPresets{"aluminium_tillotson", "alumi
 std::span<const std::string_view> presetNames() { return kPresets; }
 
 std::optional<eos::Eos> materialPreset(std::string_view name) {
-  // The study's aluminium: METHOD.md section 2 (the defaults of eos::Tillotson).
+  // The study's aluminium: spec section 2, docs/method.md (the defaults of eos::Tillotson).
   if (name == "aluminium_tillotson") return eos::Eos{eos::aluminiumStudy()};
   // Al 2024 linear Us-up fit (LASL shock Hugoniot data, Steinberg 1996): 5.328 km/s, s = 1.338.
   if (name == "aluminium_mie_gruneisen")

@@ -39,7 +39,7 @@ MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) 
   bounds.makeGhosts(a, n, support * hmax);
   CellGrid grid;
   NeighbourList list;
-  detail::selectListPass(opt.kernel, false)(a, n, support, grid, list, nullptr);
+  detail::selectListPass(opt.kernel)(a, n, support, grid, list, nullptr);
 
   std::vector<double> rho(n), self(n);
   for (std::size_t i = 0; i < n; ++i) self[i] = detail::kernelSelf(opt.kernel, a.h[i]);
@@ -95,16 +95,18 @@ MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) 
           ps.object[static_cast<std::size_t>(worst)]));
     for (std::size_t i = 0; i < n; ++i)
       if (alive[i]) a.mu[i] *= ps.rhoRef[i] / rho[i];
-    // Deletion compares with the largest *new* weight of the object. METHOD.md writes the old
-    // maximum, but the first update rescales every weight from 1 by ~rho0 dx^2, so against the
-    // old maximum whole bodies would vanish for fine spacings or light materials; after the
-    // first update the two agree to the per-iteration change of the masses.
+    // Deletion compares with the largest *new* weight of the object. The spec (section 3,
+    // docs/method.md) writes the old maximum, but the first update rescales every weight from 1
+    // by ~rho0 dx^2, so against the old maximum whole bodies would vanish for fine spacings or
+    // light materials; after the first update the two agree to the per-iteration change of the
+    // masses.
     maxMu.clear();
     for (std::size_t i = 0; i < n; ++i)
       if (alive[i]) maxMu[a.obj[i]] = std::max(maxMu[a.obj[i]], a.mu[i]);
     for (std::size_t i = 0; i < n; ++i) {
       if (alive[i] && a.mu[i] / maxMu[a.obj[i]] < opt.deleteFraction) {
-        // Badly placed: its equilibrium mass would be ~0 or negative (METHOD.md section 3).
+        // Badly placed: its equilibrium mass would be ~0 or negative (spec section 3,
+        // docs/method.md).
         alive[i] = 0;
         a.mu[i] = 0.0;
         ++report.deleted;

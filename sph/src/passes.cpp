@@ -19,7 +19,7 @@ inline PairState load(const PairArrays& a, std::size_t i) {
 // Each particle gathers over its own list: a pair is evaluated from both ends, which doubles
 // the arithmetic but needs no atomics or per-thread copies, and makes every sum's order fixed
 // (bit-for-bit reproducible at any thread count).
-template <class K, bool RZ, bool Viscous, bool Cached, bool SameObject>
+template <class K, bool RZ, bool Viscous, bool Cached>
 void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
                const MonaghanViscosity& visc, const AxisCorrection* axis, const Rates& out) {
   const std::size_t stride = list.stride;
@@ -55,12 +55,9 @@ void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list
       sax += r.ax;
       saz += r.az;
       sde += r.de;
+      // The continuity rate, like the summation density, sums over i's own object.
       if constexpr (Cached) {
-        if constexpr (SameObject) {
-          if (a.obj[j] == oi) sdrho += r.drho;
-        } else {
-          sdrho += r.drho;
-        }
+        if (a.obj[j] == oi) sdrho += r.drho;
       }
       if constexpr (RZ) shoop += r.hoop;
       if constexpr (Viscous && Cached) phi = std::min(phi, r.phi);
@@ -86,53 +83,42 @@ void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list
   }
 }
 
-// The half-state pass computes no continuity rate, so only the cached one depends on the
-// density scope.
 template <class K, bool RZ, bool Viscous>
-ForcePass pick(bool cached, bool same) {
-  if (!cached) return &forcePass<K, RZ, Viscous, false, false>;
-  return same ? &forcePass<K, RZ, Viscous, true, true> : &forcePass<K, RZ, Viscous, true, false>;
+ForcePass pick(bool cached) {
+  return cached ? &forcePass<K, RZ, Viscous, true> : &forcePass<K, RZ, Viscous, false>;
 }
 
 template <class K, bool RZ>
-ForcePass pick(bool viscous, bool cached, bool same) {
-  return viscous ? pick<K, RZ, true>(cached, same) : pick<K, RZ, false>(cached, same);
+ForcePass pick(bool viscous, bool cached) {
+  return viscous ? pick<K, RZ, true>(cached) : pick<K, RZ, false>(cached);
 }
 
 template <class K>
-ForcePass pick(bool rz, bool viscous, bool cached, bool same) {
-  return rz ? pick<K, true>(viscous, cached, same) : pick<K, false>(viscous, cached, same);
+ForcePass pick(bool rz, bool viscous, bool cached) {
+  return rz ? pick<K, true>(viscous, cached) : pick<K, false>(viscous, cached);
 }
 
-template <class K, bool SameObject>
+template <class K>
 void listPass(const PairArrays& a, std::size_t nReal, double radiusFactor, CellGrid& grid,
               NeighbourList& list, double* rhoOut) {
   if (rhoOut)
-    buildList<K, true, SameObject>(a.x.data(), a.z.data(), a.h.data(), a.mu.data(),
-                                   a.obj.data(), a.size(), nReal, radiusFactor, grid, list,
-                                   rhoOut);
+    buildList<K, true>(a.x.data(), a.z.data(), a.h.data(), a.mu.data(), a.obj.data(),
+                       a.size(), nReal, radiusFactor, grid, list, rhoOut);
   else
     buildList<K, false>(a.x.data(), a.z.data(), a.h.data(), a.mu.data(), a.obj.data(),
                         a.size(), nReal, radiusFactor, grid, list, nullptr);
 }
 
-template <class K>
-ListPass pickList(bool same) {
-  return same ? &listPass<K, true> : &listPass<K, false>;
-}
-
 }  // namespace
 
-ForcePass selectForcePass(cases::Kernel kernel, bool rz, bool viscous, bool cached,
-                          bool sameObject) {
-  return kernel == cases::Kernel::Gaussian
-             ? pick<GaussianKernel>(rz, viscous, cached, sameObject)
-             : pick<CubicSplineKernel>(rz, viscous, cached, sameObject);
+ForcePass selectForcePass(cases::Kernel kernel, bool rz, bool viscous, bool cached) {
+  return kernel == cases::Kernel::Gaussian ? pick<GaussianKernel>(rz, viscous, cached)
+                                           : pick<CubicSplineKernel>(rz, viscous, cached);
 }
 
-ListPass selectListPass(cases::Kernel kernel, bool sameObject) {
-  return kernel == cases::Kernel::Gaussian ? pickList<GaussianKernel>(sameObject)
-                                           : pickList<CubicSplineKernel>(sameObject);
+ListPass selectListPass(cases::Kernel kernel) {
+  return kernel == cases::Kernel::Gaussian ? &listPass<GaussianKernel>
+                                           : &listPass<CubicSplineKernel>;
 }
 
 double kernelSupport(cases::Kernel kernel) {

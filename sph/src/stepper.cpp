@@ -20,10 +20,9 @@ Stepper::Impl::Impl(const ParticleSystem& ps, std::vector<eos::Eos> mats, Steppe
     : cfg(std::move(config)), materials(std::move(mats)), bounds(cfg.domain, cfg.geometry) {
   rz = cfg.geometry == Geometry::Axisymmetric;
   if (rz) axis = std::make_unique<detail::AxisCorrection>(cfg.kernel);
-  const bool same = cfg.densitySum == DensitySum::SameObject;
-  passCached = detail::selectForcePass(cfg.kernel, rz, cfg.viscosity, true, same);
-  passFresh = detail::selectForcePass(cfg.kernel, rz, cfg.viscosity, false, same);
-  passList = detail::selectListPass(cfg.kernel, same);
+  passCached = detail::selectForcePass(cfg.kernel, rz, cfg.viscosity, true);
+  passFresh = detail::selectForcePass(cfg.kernel, rz, cfg.viscosity, false);
+  passList = detail::selectListPass(cfg.kernel);
   if (!(cfg.cfl > 0.0)) throw InputError(fmt::format("sph.cfl = {} must be > 0", cfg.cfl));
   // A particle moves at most (cfl/2) h_i in the half step (dt <= cfl h_i / |v_i|), so a pair
   // closes by at most cfl h_ij: a skin of cfl h_ij (plus a margin for rounding) keeps the

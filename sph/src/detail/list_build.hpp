@@ -10,10 +10,10 @@ namespace hvi::sph::detail {
 
 //! Lists, for each real particle i < nReal, the points j != i (real or ghost) closer than
 //! radiusFactor * h_ij, caching W_ij (0 beyond the kernel support). With `Density`, also
-//! rho_i = mu_i W_ii + sum_j mu_j W_ij (METHOD.md (5)), over every object or, with
-//! `SameObject`, over i's own object only (`obj` may be null otherwise). Each row is written by
-//! one thread in a fixed order, so the result does not depend on the thread count.
-template <class K, bool Density, bool SameObject = false>
+//! rho_i = mu_i W_ii + sum_j mu_j W_ij (docs/sph.md (5)) over i's own object (`obj` may be null
+//! without `Density`). Each row is written by one thread in a fixed order, so the result does
+//! not depend on the thread count.
+template <class K, bool Density>
 void buildList(const double* x, const double* z, const double* h, const double* mu,
                const int* obj, std::size_t n, std::size_t nReal, double radiusFactor,
                CellGrid& grid, NeighbourList& list, double* rho) {
@@ -73,11 +73,7 @@ void buildList(const double* x, const double* z, const double* h, const double* 
           }
           ++cnt;
           if constexpr (Density) {
-            if constexpr (SameObject) {
-              if (obj[j] == obj[i]) sum += mu[j] * w;
-            } else {
-              sum += mu[j] * w;
-            }
+            if (obj[j] == obj[i]) sum += mu[j] * w;
           }
         }
       }

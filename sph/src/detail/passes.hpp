@@ -23,21 +23,20 @@ struct Rates {
 //! [0, nReal) from the pair sums over their neighbour lists. The cached pass reuses the W_ij
 //! stored by the list build (state at the list's positions); the other recomputes W_ij from
 //! the current positions (the predictor's half state).
-//! With `sameObject` the continuity rate sums over the particle's own object only, matching
-//! the summation density of the corrector (momentum and energy always sum over every pair).
+//! The continuity rate sums over the particle's own object only, as the summation density of
+//! the corrector does (momentum and energy always sum over every pair).
 //! `axis` (r-z only, may be null in planar) corrects the hoop term near the axis.
 using ForcePass = void (*)(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
                            const MonaghanViscosity& visc, const AxisCorrection* axis,
                            const Rates& out);
-ForcePass selectForcePass(cases::Kernel kernel, bool rz, bool viscous, bool cached,
-                          bool sameObject);
+ForcePass selectForcePass(cases::Kernel kernel, bool rz, bool viscous, bool cached);
 
 //! Builds the neighbour lists of the real particles among the a.size() points and, if
 //! `rhoOut` is not null, the summation density of the real particles into it (over the
-//! particle's own object with `sameObject`, over all otherwise).
+//! particle's own object).
 using ListPass = void (*)(const PairArrays& a, std::size_t nReal, double radiusFactor,
                           CellGrid& grid, NeighbourList& list, double* rhoOut);
-ListPass selectListPass(cases::Kernel kernel, bool sameObject);
+ListPass selectListPass(cases::Kernel kernel);
 
 double kernelSupport(cases::Kernel kernel);  //!< in units of h
 double kernelSelf(cases::Kernel kernel, double h);  //!< W(0, h)

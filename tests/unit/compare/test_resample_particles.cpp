@@ -97,10 +97,10 @@ TEST(ResampleParticles, BoundaryOnAFineGridSitsAtTheFace) {
 }
 
 TEST(ResampleParticles, ModifiedSphMassesKeepTheBoundaryWithinOneSpacing) {
-  // Modified SPH (METHOD.md section 3) iterates the masses until sum_j m_j W_ij = rho0 at every
-  // particle: surface particles end up ~1.45 times heavier, so m / rho there exceeds dx^2 and the
-  // 0.5 contour of the fraction moves outward (by ~0.27 dx for h = dx). It must stay within one
-  // spacing, and the interior must be untouched.
+  // Modified SPH (spec section 3, docs/method.md) iterates the masses until sum_j m_j W_ij =
+  // rho0 at every particle: surface particles end up ~1.45 times heavier, so m / rho there
+  // exceeds dx^2 and the 0.5 contour of the fraction moves outward (by ~0.27 dx for h = dx). It
+  // must stay within one spacing, and the interior must be untouched.
   Snapshot snap = lattice(Scene2{box(0.0, 0.3, 0.0, 0.3)}, 0.0, 0.3, 0.0, 0.3, kDx);
   const auto n = static_cast<long>(snap.positions.size());
   std::vector<double>& m = snap.fields[1].data;

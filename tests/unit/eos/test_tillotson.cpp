@@ -124,7 +124,7 @@ TEST(Tillotson, KnownValues) {
   // By hand at delta = 1.2, e = 0.05: w = 1 + 0.05/(0.05 1.44) = 61/36,
   // P = (0.5 + 1.63 36/61) 3.348 0.05 + 0.75 0.2 + 0.65 0.04 = 0.4207333114754098 Mbar.
   EXPECT_NEAR(al.pressure(1.2 * al.rho0, 0.05), 0.4207333114754098, 1e-15);
-  // Study parameters in cm-g-us (METHOD.md section 2).
+  // Study parameters in cm-g-us (spec section 2, docs/method.md).
   EXPECT_EQ(al.rho0, 2.79);
   EXPECT_EQ(al.A, 0.75);
   EXPECT_EQ(al.B, 0.65);

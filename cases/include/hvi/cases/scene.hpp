@@ -119,11 +119,11 @@ struct TvdParams {
   double vacuumDensity = 1e-6; //!< below this fraction of rho0 a cell is vacuum
 };
 
-//! Exact Riemann problem (the verification "solver"): left body and right body meet at `x0`
-//! along the direction `direction` (unit vector); sampled on a grid of `cells` cells.
+//! Exact Riemann problem (the verification "solver"): the left and right bodies meet at
+//! x = `interface`; the solution is sampled on `cells` cells across the domain in x.
 struct RiemannParams {
   int cells = 400;
-  double interface = 0.5;
+  double interface = 0.5;  //!< cm
 };
 
 struct Output {

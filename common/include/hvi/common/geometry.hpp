@@ -6,7 +6,7 @@ namespace hvi {
 
 enum class Geometry { Planar, Axisymmetric };
 
-//! The symmetry index n of METHOD.md section 1.
+//! The symmetry index n of the governing equations (docs/method.md, "Governing equations").
 constexpr int symmetryIndex(Geometry g) { return g == Geometry::Axisymmetric ? 1 : 0; }
 constexpr std::string_view toString(Geometry g) {
   return g == Geometry::Axisymmetric ? "rz" : "planar";

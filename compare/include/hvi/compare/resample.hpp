@@ -19,7 +19,7 @@ struct ResampleOptions {
   //! A cell is material when the kernel-weighted particle fraction (or, for a grid source, the
   //! covered non-vacuum share of its area) is at least this.
   double materialThreshold = 0.5;
-  //! Gaussian kernel support in units of h (METHOD.md section 3 cuts it at 3h).
+  //! Gaussian kernel support in units of h (the spec cuts it at 3h: section 3, docs/method.md).
   double kernelSupport = 3.0;
   RzMass rzMass = RzMass::Auto;
 };

@@ -43,7 +43,8 @@ double lowestSpecificEnergy(const Eos& eos);
 //! reaches p.
 double energyForPressure(const Eos& eos, double rho, double p);
 
-//! The study's aluminium (METHOD.md section 2 table), Tillotson with cut-off, cm-g-us units.
+//! The study's aluminium (the table of spec section 2, docs/method.md), Tillotson with cut-off,
+//! cm-g-us units.
 Tillotson aluminiumStudy();
 
 }  // namespace hvi::eos

@@ -1,4 +1,5 @@
-//! @file Tillotson equation of state (METHOD.md section 2), four regions, tension cut-off.
+//! @file Tillotson equation of state (spec section 2, docs/method.md), four regions, tension
+//! cut-off.
 #pragma once
 #include "hvi/eos/state.hpp"
 

@@ -35,8 +35,8 @@ inline double expNegative(double x) {
   return p * scale;
 }
 
-//! Gaussian of METHOD.md section 3, W ~ exp(-(r/h)^2) / (pi h^2) cut at r = 3h, with a small
-//! quadratic subtracted so that W and dW/dr both vanish at the cut:
+//! Gaussian of spec section 3 (docs/method.md), W ~ exp(-(r/h)^2) / (pi h^2) cut at r = 3h,
+//! with a small quadratic subtracted so that W and dW/dr both vanish at the cut:
 //!   W = (exp(-q^2) - exp(-9) (10 - q^2)) / (pi h^2 (1 - 50.5 exp(-9))),  q = r/h < 3;  0 beyond.
 //! The plain cut jumps by exp(-9) W(0) at 3h (and its gradient by 6 exp(-9) W(0) / h). On a
 //! square lattice with h = dx the (3, 0) neighbours sit exactly there, so round-off in their

@@ -1,4 +1,4 @@
-//! @file The mass iteration of modified SPH (METHOD.md section 3).
+//! @file The mass iteration of modified SPH (spec section 3, docs/method.md).
 #pragma once
 #include <cstddef>
 

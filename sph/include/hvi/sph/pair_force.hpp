@@ -18,7 +18,7 @@ struct PairState {
 //!   dv_a/dt   = (1/r_a) sum ax,az + e_r H_a / r_a^2
 //!   de_a/dt   = (1/r_a) sum de    + lam_a H_a / r_a
 //!   drho_a/dt = sum drho (+ the self term mu_a lam_a W_aa),   H_a = sum hoop (+ self term).
-//! With r = 1 these are METHOD.md's planar equations exactly.
+//! With r = 1 these are the spec's planar equations exactly (section 3, docs/method.md).
 struct PairResult {
   double ax = 0.0, az = 0.0;  //!< -mu_b (q_a + q_b + rbar Pi) grad_a W_ab
   double de = 0.0;            //!< mu_b (q_a + q_b + rbar Pi) v_ab . grad_a W_ab / 2

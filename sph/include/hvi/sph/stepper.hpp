@@ -13,20 +13,12 @@
 
 namespace hvi::sph {
 
-//! Which particles the summation density (5) and the continuity rate (7) of particle i sum
-//! over. SameObject: i's own object (body), which is what the per-object mass iteration makes
-//! exact at t = 0, also where bodies touch; AllObjects: every particle, so that touching bodies
-//! add to each other's density (their boosted surface masses then overshoot by ~30% at the
-//! contact at t = 0). Momentum and energy always sum over every pair. docs/sph.md.
-enum class DensitySum { SameObject, AllObjects };
-
 struct StepperConfig {
   Geometry geometry = Geometry::Planar;
   cases::Kernel kernel = cases::Kernel::Gaussian;
   bool viscosity = true;           //!< effect artificial_viscosity
   MonaghanViscosity visc;          //!< alpha_Pi, beta_Pi
   double cfl = 0.3;
-  DensitySum densitySum = DensitySum::SameObject;
   cases::Domain domain;            //!< walls / axis are mirrors, outflow sides remove particles
   double time = 0.0;               //!< us, time of the initial state
   std::vector<std::string> objectNames;  //!< for diagnostics
@@ -41,6 +33,9 @@ struct StepperConfig {
 //!   corrector: list rebuilt at x^{n+1}, rho^{n+1} by summation, P and c from the EOS.
 //! The list radius (kernel support + cfl) h_ij covers every pair that can come within the
 //! support during the half step, because the CFL limit bounds each particle's motion.
+//! The summation density (5) and the continuity rate (7) of particle i sum over i's own object
+//! (body), which the per-object mass iteration makes exact at t = 0, also where bodies touch;
+//! momentum and energy sum over every pair (docs/sph.md).
 class Stepper {
  public:
   //! Takes masses as given (traditional, or from adjustMasses) and runs the corrector once to

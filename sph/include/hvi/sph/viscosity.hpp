@@ -1,4 +1,4 @@
-//! @file Monaghan artificial viscosity Pi_ij (METHOD.md section 3), one pair.
+//! @file Monaghan artificial viscosity Pi_ij (spec section 3, docs/method.md), one pair.
 #pragma once
 
 namespace hvi::sph {
