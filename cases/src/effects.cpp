@@ -1,36 +1,72 @@
-//! @file Names of the effects a scene may request.
-#include <array>
-#include <utility>
+//! @file The effect table and the resolution of a scene's materials.
+#include "hvi/cases/effects.hpp"
 
-#include "hvi/cases/scene.hpp"
+#include <algorithm>
 
 namespace hvi::cases {
 namespace {
-constexpr std::array<std::pair<Effect, std::string_view>, 7> kNames{{
-    {Effect::ArtificialViscosity, "artificial_viscosity"},
-    {Effect::TensionCutoff, "tension_cutoff"},
-    {Effect::MassAdjustment, "mass_adjustment"},
-    {Effect::PhaseBookkeeping, "phase_bookkeeping"},
-    {Effect::EnergyBudget, "energy_budget"},
-    {Effect::MaterialInterfaces, "material_interfaces"},
-    {Effect::Features, "features"},
+constexpr std::array<EffectInfo, 7> kEffects{{
+    {Effect::ArtificialViscosity, "artificial_viscosity", "Monaghan viscosity"},
+    {Effect::TensionCutoff, "tension_cutoff", "P = 0 in tension (Tillotson, Mie-Gruneisen)"},
+    {Effect::MassAdjustment, "mass_adjustment",
+     "modified SPH mass iteration (absent: traditional SPH)"},
+    {Effect::PhaseBookkeeping, "phase_bookkeeping", "solid / partly vaporised / vapour fractions"},
+    {Effect::EnergyBudget, "energy_budget", "kinetic / internal / total energy per step"},
+    {Effect::MaterialInterfaces, "material_interfaces", "marker lines between objects"},
+    {Effect::Features, "features", "debris-cloud features at each snapshot"},
 }};
+
+// What each solver implements, in the order its messages list them.
+constexpr std::array kSph{Effect::ArtificialViscosity, Effect::TensionCutoff,
+                          Effect::MassAdjustment,      Effect::PhaseBookkeeping,
+                          Effect::EnergyBudget,        Effect::Features};
+constexpr std::array kTvd{Effect::TensionCutoff, Effect::MaterialInterfaces,
+                          Effect::PhaseBookkeeping, Effect::EnergyBudget, Effect::Features};
+constexpr std::array kRiemann{Effect::EnergyBudget};  // the exact solution has no physics to add
 }  // namespace
 
+std::span<const EffectInfo> effectTable() { return kEffects; }
+
 std::string_view toString(Effect e) {
-  for (auto& [k, n] : kNames)
-    if (k == e) return n;
+  for (const auto& row : kEffects)
+    if (row.effect == e) return row.name;
   return "?";
 }
 std::optional<Effect> effectFromString(std::string_view s) {
-  for (auto& [k, n] : kNames)
-    if (n == s) return k;
+  for (const auto& row : kEffects)
+    if (row.name == s) return row.effect;
   return std::nullopt;
 }
 std::vector<std::string_view> allEffectNames() {
   std::vector<std::string_view> v;
-  for (auto& [k, n] : kNames) v.push_back(n);
+  for (const auto& row : kEffects) v.push_back(row.name);
   return v;
+}
+
+std::span<const Effect> supportedEffects(SolverKind s) {
+  switch (s) {
+    case SolverKind::Sph:
+      return kSph;
+    case SolverKind::Tvd:
+      return kTvd;
+    case SolverKind::Riemann:
+      return kRiemann;
+  }
+  return {};
+}
+bool supports(SolverKind s, Effect e) {
+  const auto v = supportedEffects(s);
+  return std::find(v.begin(), v.end(), e) != v.end();
+}
+
+std::vector<Material> resolveMaterials(const Scene& scene) {
+  const bool cutoff = scene.has(Effect::TensionCutoff);
+  std::vector<Material> out = scene.materials;
+  for (Material& m : out) {
+    if (auto* t = std::get_if<eos::Tillotson>(&m.eos)) t->tensionCutoff = cutoff;
+    if (auto* g = std::get_if<eos::MieGruneisen>(&m.eos)) g->tensionCutoff = cutoff;
+  }
+  return out;
 }
 
 }  // namespace hvi::cases

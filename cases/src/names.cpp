@@ -1,7 +1,6 @@
-//! @file Scene-file names of the enumerations, and the effect support of each solver.
+//! @file Scene-file names of the enumerations.
 #include "hvi/cases/names.hpp"
 
-#include <algorithm>
 #include <array>
 
 namespace hvi::cases {
@@ -32,24 +31,5 @@ std::string_view toString(Boundary b) { return nameOf(kBoundaries, b); }
 std::string_view toString(Kernel k) { return nameOf(kKernels, k); }
 std::string_view toString(Lattice l) { return nameOf(kLattices, l); }
 std::string_view toString(Limiter l) { return nameOf(kLimiters, l); }
-
-std::vector<Effect> supportedEffects(SolverKind s) {
-  switch (s) {
-    case SolverKind::Sph:
-      return {Effect::ArtificialViscosity, Effect::TensionCutoff, Effect::MassAdjustment,
-              Effect::PhaseBookkeeping,    Effect::EnergyBudget,  Effect::Features};
-    case SolverKind::Tvd:
-      return {Effect::TensionCutoff, Effect::MaterialInterfaces, Effect::PhaseBookkeeping,
-              Effect::EnergyBudget, Effect::Features};
-    case SolverKind::Riemann:
-      return {Effect::EnergyBudget};
-  }
-  return {};
-}
-
-bool supports(SolverKind s, Effect e) {
-  const auto v = supportedEffects(s);
-  return std::find(v.begin(), v.end(), e) != v.end();
-}
 
 }  // namespace hvi::cases

@@ -5,6 +5,7 @@
 
 #include "detail/parse.hpp"
 #include "detail/schema.hpp"
+#include "hvi/cases/effects.hpp"
 #include "hvi/cases/presets.hpp"
 
 namespace hvi::cases::detail {
@@ -103,7 +104,7 @@ eos::MieGruneisen readMieGruneisen(const TableReader& m, eos::MieGruneisen g, bo
   return g;
 }
 
-eos::Eos readEos(const TableReader& m, bool tensionCutoff) {
+eos::Eos readEos(const TableReader& m) {
   std::optional<eos::Eos> preset;
   if (m.has("preset")) preset = materialPreset(presetNames()[m.choice("preset", presetNames())]);
   std::size_t kind = 0;
@@ -119,23 +120,15 @@ eos::Eos readEos(const TableReader& m, bool tensionCutoff) {
            "preset: " + join(presetNames()) + "; eos: " + join(kEosNames));
   }
   const bool p = preset.has_value();
-  eos::Eos result;
   switch (kind) {
     case 0:
-      result = readTillotson(m, p ? std::get<eos::Tillotson>(*preset) : eos::Tillotson{}, p);
-      break;
+      return readTillotson(m, p ? std::get<eos::Tillotson>(*preset) : eos::Tillotson{}, p);
     case 1:
-      result = readIdealGas(m, p ? std::get<eos::IdealGas>(*preset) : eos::IdealGas{}, p);
-      break;
+      return readIdealGas(m, p ? std::get<eos::IdealGas>(*preset) : eos::IdealGas{}, p);
     default:
-      result =
-          readMieGruneisen(m, p ? std::get<eos::MieGruneisen>(*preset) : eos::MieGruneisen{}, p);
-      break;
+      return readMieGruneisen(m, p ? std::get<eos::MieGruneisen>(*preset) : eos::MieGruneisen{},
+                              p);
   }
-  // The tension cut-off is the scene's effect, not a material property: one switch per run.
-  if (auto* t = std::get_if<eos::Tillotson>(&result)) t->tensionCutoff = tensionCutoff;
-  if (auto* g = std::get_if<eos::MieGruneisen>(&result)) g->tensionCutoff = tensionCutoff;
-  return result;
 }
 
 }  // namespace
@@ -151,7 +144,6 @@ void parseMaterials(const TableReader& root, Scene& scene) {
   std::stable_sort(entries.begin(), entries.end(), [&](const auto& l, const auto& r) {
     return lineInFile(ctx, *l.second) < lineInFile(ctx, *r.second);
   });
-  const bool cutoff = scene.has(Effect::TensionCutoff);
   for (const auto& [name, node] : entries) {
     const std::string path = mats->keyPath(name);
     const toml::table* t = node->as_table();
@@ -160,8 +152,10 @@ void parseMaterials(const TableReader& root, Scene& scene) {
            "[" + path + "] with preset = \"...\" or eos = \"...\"");
     if (name.empty()) fail(root.ctx(), node, path, "a material needs a non-empty name");
     const TableReader m(root.ctx(), *t, path);
-    scene.materials.push_back(Material{name, readEos(m, cutoff)});
+    scene.materials.push_back(Material{name, readEos(m)});
   }
+  // The tension cut-off is the scene's effect, switched in as every solver switches it.
+  scene.materials = resolveMaterials(scene);
 }
 
 }  // namespace hvi::cases::detail

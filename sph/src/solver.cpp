@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "hvi/cases/effects.hpp"
 #include "hvi/common/error.hpp"
 #include "hvi/common/units.hpp"
 #include "hvi/sph/fill.hpp"
@@ -46,14 +47,8 @@ StepperConfig stepperConfig(const cases::Scene& scene) {
 }  // namespace
 
 std::vector<eos::Eos> sceneMaterials(const cases::Scene& scene) {
-  const bool cutoff = scene.has(cases::Effect::TensionCutoff);
   std::vector<eos::Eos> out;
-  for (const auto& mat : scene.materials) {
-    eos::Eos e = mat.eos;
-    if (auto* t = std::get_if<eos::Tillotson>(&e)) t->tensionCutoff = cutoff;
-    if (auto* g = std::get_if<eos::MieGruneisen>(&e)) g->tensionCutoff = cutoff;
-    out.push_back(e);
-  }
+  for (const auto& mat : cases::resolveMaterials(scene)) out.push_back(mat.eos);
   return out;
 }
 

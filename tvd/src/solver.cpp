@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "eos_line.hpp"
+#include "hvi/cases/effects.hpp"
 #include "hvi/common/error.hpp"
 #include "hvi/tvd/tvd.hpp"
 #include "workspace.hpp"
@@ -91,6 +92,9 @@ void TvdSolver::setUpGrid(const cases::Scene& scene) {
 }
 
 void TvdSolver::setUpMaterials(const cases::Scene& scene) {
+  // As every solver runs them (the tension cut-off follows the scene's effect), not as given:
+  // a Scene built in code may carry the EOS defaults.
+  materials_ = cases::resolveMaterials(scene);
   if (materials_.empty()) throw InputError("tvd: the scene defines no material");
   if (scene.bodies.empty()) throw InputError("tvd: the scene defines no body");
   for (const auto& b : scene.bodies) {

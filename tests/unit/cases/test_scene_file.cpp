@@ -11,6 +11,7 @@
 #include <future>
 #include <string>
 
+#include "hvi/cases/doc_tables.hpp"
 #include "hvi/cases/load.hpp"
 #include "hvi/common/error.hpp"
 #include "hvi/test/scene_files.hpp"
@@ -103,6 +104,14 @@ TEST(SceneFile, SymlinkToARegularSceneIsRead) {
   fs::create_symlink(test::shippedDir() / "sod_x.toml", link);
   EXPECT_NO_THROW((void)loadScene(link));
   fs::remove_all(dir);
+}
+
+// docs/scenes.md shows the tables the parser runs on, verbatim: a key or effect added to a
+// table fails here until the document shows it (the message is the table to paste).
+TEST(SceneDocs, TablesMatchTheParser) {
+  const std::string doc = test::readText(fs::path(HVI_SOURCE_DIR) / "docs" / "scenes.md");
+  const std::string effects = effectTableMarkdown();
+  EXPECT_NE(doc.find(effects), std::string::npos) << "docs/scenes.md lacks:\n" << effects;
 }
 
 }  // namespace

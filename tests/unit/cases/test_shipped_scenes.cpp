@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "hvi/cases/effects.hpp"
 #include "hvi/cases/load.hpp"
 #include "hvi/cases/names.hpp"
 #include "hvi/test/scene_files.hpp"
@@ -284,6 +285,28 @@ TEST(SceneShipped, VerificationInitialStates) {
   EXPECT_EQ(tube.bodies[1].velocity.x, 0.0);
   EXPECT_EQ(tube.riemann.interface, 1.0);
   EXPECT_FALSE(std::get<eos::Tillotson>(tube.materials[0].eos).tensionCutoff);
+}
+
+// One resolution for every solver: the EOS defaults disagree (Tillotson cut, Mie-Gruneisen
+// not), so a Scene built in code used to run with the cut-off in TVD and without it in SPH.
+TEST(SceneEffects, TensionCutoffFollowsTheEffectWhateverTheEosDefault) {
+  Scene s;
+  s.materials = {{"al", eos::Tillotson{}}, {"cu", eos::MieGruneisen{}}, {"air", eos::IdealGas{}}};
+  for (bool named : {false, true}) {
+    if (named) s.effects.insert(Effect::TensionCutoff);
+    const auto m = resolveMaterials(s);
+    ASSERT_EQ(m.size(), 3u);
+    EXPECT_EQ(std::get<eos::Tillotson>(m[0].eos).tensionCutoff, named);
+    EXPECT_EQ(std::get<eos::MieGruneisen>(m[1].eos).tensionCutoff, named);
+    EXPECT_EQ(m[2].name, "air");
+  }
+  for (const auto& f : test::tomlFiles(test::shippedDir())) {  // the parser stores the same
+    SCOPED_TRACE(f.filename().string());
+    const Scene parsed = loadScene(f);
+    const auto m = resolveMaterials(parsed);
+    for (std::size_t i = 0; i < m.size(); ++i)
+      std::visit(test::SameEos{parsed.materials[i].eos}, m[i].eos);
+  }
 }
 
 }  // namespace

@@ -153,9 +153,13 @@ TEST(TvdMarkerFlow, TwoMaterialContactSlips) {
       "slip at 45 degrees: max state error near the contact %.2e (Al on Cu, contact "
       "flux), %.2e (one material, no contact treatment)\n",
       two, one);
-  // Exact up to round-off (the star state rebuilds the velocity from its normal and tangential
-  // parts every step: a few 1e-11 after 100 steps); any mixing across the contact is >= 1e-3.
-  EXPECT_LT(two, 1e-8);
+  // Any mixing across the contact is >= 1e-3. Without the tension cut-off on copper the states
+  // are exact up to round-off (the star state rebuilds the velocity from its normal and
+  // tangential parts every step: a few 1e-11 after 100 steps); the cut-off, which a scene
+  // switches for every material at once, zeroes copper's pressure derivatives wherever
+  // round-off makes its P < 0 and leaves 4.8e-7. (Before cases::resolveMaterials this test ran
+  // Al cut and Cu uncut, which no scene file can give.)
+  EXPECT_LT(two, 1e-6);
   EXPECT_GT(one, 1e-2);
 }
 

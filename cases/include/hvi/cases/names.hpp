@@ -1,11 +1,11 @@
-//! @file Names of the scene's enumerations as written in scene files, and which solver supports
-//! which effect.
+//! @file Names of the scene's enumerations as written in scene files (effects: effects.hpp).
 #pragma once
 #include <optional>
 #include <span>
 #include <string_view>
 #include <vector>
 
+#include "hvi/cases/effects.hpp"
 #include "hvi/cases/scene.hpp"
 
 namespace hvi::cases {
@@ -23,12 +23,5 @@ std::string_view toString(Boundary b);
 std::string_view toString(Kernel k);
 std::string_view toString(Lattice l);
 std::string_view toString(Limiter l);
-
-//! Effects a solver implements; a scene naming any other effect for that solver is rejected.
-//! SPH: artificial_viscosity, tension_cutoff, mass_adjustment, phase_bookkeeping,
-//! energy_budget, features. TVD: tension_cutoff, material_interfaces, phase_bookkeeping,
-//! energy_budget, features. Riemann (exact solution): energy_budget.
-std::vector<Effect> supportedEffects(SolverKind s);
-bool supports(SolverKind s, Effect e);
 
 }  // namespace hvi::cases

@@ -80,7 +80,8 @@ struct Domain {
 
 enum class SolverKind { Sph, Tvd, Riemann };
 
-//! Effects a scene may name (METHOD.md section 6). A solver pays only for those named.
+//! Effects a scene may name (docs/scenes.md, Effects; names, meanings and the solvers that
+//! implement each: effects.hpp). A solver pays only for those named.
 enum class Effect {
   ArtificialViscosity,  //!< Monaghan viscosity (SPH)
   TensionCutoff,        //!< P = 0 in tension for Tillotson / Mie-Gruneisen

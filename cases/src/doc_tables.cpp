@@ -1,0 +1,48 @@
+//! @file Markdown tables for docs/scenes.md, columns padded to their widest cell.
+#include "hvi/cases/doc_tables.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "hvi/cases/effects.hpp"
+
+namespace hvi::cases {
+namespace {
+
+using Row = std::vector<std::string>;
+
+std::string markdownTable(const Row& header, const std::vector<Row>& rows) {
+  std::vector<std::size_t> width(header.size());
+  for (std::size_t c = 0; c < header.size(); ++c) {
+    width[c] = header[c].size();
+    for (const Row& r : rows) width[c] = std::max(width[c], r[c].size());
+  }
+  auto line = [&](const Row& r) {
+    std::string s = "|";
+    for (std::size_t c = 0; c < r.size(); ++c)
+      s += " " + r[c] + std::string(width[c] - r[c].size(), ' ') + " |";
+    return s + "\n";
+  };
+  std::string out = line(header) + "|";
+  for (std::size_t w : width) out += std::string(w + 2, '-') + "|";
+  out += "\n";
+  for (const Row& r : rows) out += line(r);
+  return out;
+}
+
+std::string code(std::string_view s) { return "`" + std::string(s) + "`"; }
+
+}  // namespace
+
+std::string effectTableMarkdown() {
+  std::vector<Row> rows;
+  for (const EffectInfo& e : effectTable()) {
+    Row r{code(e.name), std::string(e.meaning)};
+    for (SolverKind s : {SolverKind::Sph, SolverKind::Tvd, SolverKind::Riemann})
+      r.push_back(supports(s, e.effect) ? "yes" : "");
+    rows.push_back(std::move(r));
+  }
+  return markdownTable({"effect", "meaning", "sph", "tvd", "riemann"}, rows);
+}
+
+}  // namespace hvi::cases
