@@ -3,7 +3,7 @@
 # One place for what every library of the project needs: the target hvi_<name> and its alias
 # hvi::<name> (the name other projects link after find_package(hvi)), public headers in the
 # folder's include/ (src/ is a private include path), the project's warnings (build only), and
-# the install export set (docs/architecture.md, "Using the libraries from another project").
+# the install export set (README.md, "Using the libraries from another project").
 function(hvi_add_library name)
   cmake_parse_arguments(PARSE_ARGV 1 L "" "" "SOURCES;PUBLIC;PRIVATE")
   if(L_UNPARSED_ARGUMENTS OR NOT L_SOURCES)
