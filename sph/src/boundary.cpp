@@ -52,9 +52,8 @@ std::size_t Boundaries::makeGhosts(PairArrays& a, std::size_t n, double margin) 
   }
   a.resize(n + parent_.size());
   for (std::size_t g = 0; g < parent_.size(); ++g) {
-    const std::size_t k = n + g;
-    a.h[k] = a.h[parent_[g]];
-    a.obj[k] = a.obj[parent_[g]];
+    const std::size_t k = n + g, p = static_cast<std::size_t>(parent_[g]);
+    a.forEachFixed([k, p](auto& v) { v[k] = v[p]; });
   }
   refreshGhosts(a, n);
   return parent_.size();
@@ -71,13 +70,7 @@ void Boundaries::refreshGhosts(PairArrays& a, std::size_t n) const {
     a.z[k] = t.sz * a.z[p] + t.oz;
     a.vx[k] = t.sx * a.vx[p];
     a.vz[k] = t.sz * a.vz[p];
-    a.rho[k] = a.rho[p];
-    a.p[k] = a.p[p];
-    a.c[k] = a.c[p];
-    a.mu[k] = a.mu[p];
-    a.rw[k] = a.rw[p];
-    a.q[k] = a.q[p];
-    a.lam[k] = a.lam[p];
+    a.forEachCopied([k, p](auto& v) { v[k] = v[p]; });
   }
 }
 

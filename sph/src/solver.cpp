@@ -1,13 +1,11 @@
 //! @file The SPH solver: scene to particles, stepping, snapshots.
 #include "hvi/sph/sph.hpp"
 
-#include <algorithm>
-
 #include <fmt/format.h>
 
 #include "hvi/cases/effects.hpp"
 #include "hvi/common/error.hpp"
-#include "hvi/common/units.hpp"
+#include "hvi/common/snapshot.hpp"
 #include "hvi/sph/fill.hpp"
 
 namespace hvi::sph {
@@ -31,6 +29,20 @@ void validate(const cases::Scene& scene) {
                                  scene.path, scene.sph.alpha, scene.sph.beta));
 }
 
+// Validated before the fill, so that a scene SPH cannot run gets the solver's message.
+ParticleSystem filledBodies(const cases::Scene& scene) {
+  validate(scene);
+  return fillBodies(scene);
+}
+
+}  // namespace
+
+std::vector<eos::Eos> sceneMaterials(const cases::Scene& scene) {
+  std::vector<eos::Eos> out;
+  for (const auto& mat : cases::resolveMaterials(scene)) out.push_back(mat.eos);
+  return out;
+}
+
 StepperConfig stepperConfig(const cases::Scene& scene) {
   StepperConfig cfg;
   cfg.geometry = scene.geometry;
@@ -44,71 +56,52 @@ StepperConfig stepperConfig(const cases::Scene& scene) {
   return cfg;
 }
 
-}  // namespace
-
-std::vector<eos::Eos> sceneMaterials(const cases::Scene& scene) {
-  std::vector<eos::Eos> out;
-  for (const auto& mat : cases::resolveMaterials(scene)) out.push_back(mat.eos);
-  return out;
+MassAdjustOptions massAdjustOptions(const cases::Scene& scene) {
+  MassAdjustOptions opt;
+  opt.geometry = scene.geometry;
+  opt.kernel = scene.sph.kernel;
+  opt.domain = scene.domain;
+  opt.tolerance = scene.sph.massTolerance;
+  opt.deleteFraction = scene.sph.deleteFraction;
+  opt.maxIterations = scene.sph.maxMassIterations;
+  return opt;
 }
 
-SphSolver::SphSolver(const cases::Scene& scene) : scene_(scene) {
+SphSolver::SphSolver(const cases::Scene& scene) : SphSolver(scene, filledBodies(scene)) {}
+
+SphSolver::SphSolver(const cases::Scene& scene, ParticleSystem ps) : scene_(scene) {
   validate(scene_);
   materials_ = sceneMaterials(scene_);
-  ParticleSystem ps = fillBodies(scene_);
-  if (scene_.has(cases::Effect::MassAdjustment)) {
-    MassAdjustOptions opt;
-    opt.geometry = scene_.geometry;
-    opt.kernel = scene_.sph.kernel;
-    opt.domain = scene_.domain;
-    opt.tolerance = scene_.sph.massTolerance;
-    opt.deleteFraction = scene_.sph.deleteFraction;
-    opt.maxIterations = scene_.sph.maxMassIterations;
-    massReport_ = adjustMasses(ps, opt);
-  }
+  if (scene_.has(cases::Effect::MassAdjustment))
+    massReport_ = adjustMasses(ps, massAdjustOptions(scene_));
   stepper_ = std::make_unique<Stepper>(ps, materials_, stepperConfig(scene_));
 }
 
 Snapshot SphSolver::snapshot() const {
   const ParticleSystem ps = stepper_->particles();
-  const std::size_t n = ps.size();
-  Snapshot s;
-  s.time = stepper_->time();
-  s.step = stepper_->stepCount();
-  s.solver = "sph";
-  s.geometry = scene_.geometry;
-  s.kind = Snapshot::Kind::Particles;
-  s.positions.resize(n);
-  for (std::size_t i = 0; i < n; ++i) s.positions[i] = {ps.x[i], ps.z[i]};
-  auto scalar = [&](const char* name, const char* unit, const auto& v) {
-    Field f{name, unit, 1, std::vector<double>(n)};
-    for (std::size_t i = 0; i < n; ++i) f.data[i] = static_cast<double>(v[i]);
-    s.fields.push_back(std::move(f));
-  };
-  const bool rz = scene_.geometry == Geometry::Axisymmetric;
-  scalar("density", units::densityName, ps.rho);
-  scalar("pressure", units::pressureName, ps.p);
-  Field vel{"velocity", units::velocityName, 2, std::vector<double>(2 * n)};
-  for (std::size_t i = 0; i < n; ++i) {
-    vel.data[2 * i] = ps.vx[i];
-    vel.data[2 * i + 1] = ps.vz[i];
-  }
-  s.fields.push_back(std::move(vel));
-  scalar("specific_energy", units::energyName, ps.e);
-  scalar("sound_speed", units::velocityName, ps.c);
-  scalar("mass", rz ? "g" : "g/cm", ps.m);
-  scalar("material", "1", ps.material);
-  scalar("object", "1", ps.object);
-  scalar("smoothing_length", units::lengthName, ps.h);
-  scalar("id", "1", ps.id);
+  Snapshot s = makeSnapshot("sph", Snapshot::Kind::Particles, scene_.geometry, stepper_->time(),
+                            stepper_->stepCount());
+  s.positions.resize(ps.size());
+  for (std::size_t i = 0; i < ps.size(); ++i) s.positions[i] = {ps.x[i], ps.z[i]};
+  using Q = Quantity;
+  addField(s, Q::Density, ps.rho);
+  addField(s, Q::Pressure, ps.p);
+  addField(s, Q::Velocity, ps.vx, ps.vz);
+  addField(s, Q::SpecificEnergy, ps.e);
+  addField(s, Q::SoundSpeed, ps.c);
+  addField(s, Q::Mass, ps.m);
+  addField(s, Q::Material, ps.material);
+  addField(s, Q::Object, ps.object);
+  addField(s, Q::SmoothingLength, ps.h);
+  addField(s, Q::Id, ps.id);
   if (scene_.has(cases::Effect::PhaseBookkeeping)) {
-    Field frac{"vapour_fraction", "1", 1, std::vector<double>(n, 0.0)};
-    Field phase{"phase", "1", 1, std::vector<double>(n, 0.0)};
-    for (std::size_t i = 0; i < n; ++i) {
-      const auto* t = std::get_if<eos::Tillotson>(&materials_[static_cast<std::size_t>(ps.material[i])]);
-      if (!t) continue;
-      frac.data[i] = std::clamp((ps.e[i] - t->e1) / (t->e2 - t->e1), 0.0, 1.0);
-      phase.data[i] = static_cast<double>(static_cast<int>(t->phase(ps.e[i])));
+    Field frac = makeField(Q::VapourFraction, s.geometry, ps.size());
+    Field phase = makeField(Q::Phase, s.geometry, ps.size());
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      const eos::Eos& mat = materials_[static_cast<std::size_t>(ps.material[i])];
+      const eos::PhaseState st = eos::phaseState(mat, ps.e[i]);
+      frac.data[i] = st.vapourFraction;
+      phase.data[i] = static_cast<double>(static_cast<int>(st.phase));
     }
     s.fields.push_back(std::move(frac));
     s.fields.push_back(std::move(phase));

@@ -34,24 +34,9 @@ Stepper::Impl::Impl(const ParticleSystem& ps, std::vector<eos::Eos> mats, Steppe
       throw InputError(fmt::format("particle material {} is not one of the {} materials", k,
                                    materials.size()));
   a.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    a.x[i] = ps.x[i];
-    a.z[i] = ps.z[i];
-    a.vx[i] = ps.vx[i];
-    a.vz[i] = ps.vz[i];
-    a.h[i] = ps.h[i];
-    a.obj[i] = ps.object[i];
-  }
-  e = ps.e;
-  m = ps.m;
-  rhoRef = ps.rhoRef;
-  mat = ps.material;
-  id = ps.id;
+  forEachState(*this, [&ps](auto member, auto& v) { v = ps.*member; });
   t = cfg.time;
-  for (auto* v : {&x0, &z0, &vx0, &vz0, &e0, &rho0, &ax0, &az0, &de0, &drho0, &phi0, &ax1, &az1,
-                  &de1})
-    v->resize(n);
-  keep.resize(n);
+  resizeWork();
   corrector();
 }
 
@@ -180,23 +165,17 @@ void Stepper::Impl::removeOutflow() {
     }
   }
   if (removed == 0) return;
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!keep[i]) continue;
-    a.x[k] = a.x[i]; a.z[k] = a.z[i]; a.vx[k] = a.vx[i]; a.vz[k] = a.vz[i];
-    a.h[k] = a.h[i]; a.obj[k] = a.obj[i];
-    e[k] = e[i]; m[k] = m[i]; rhoRef[k] = rhoRef[i]; mat[k] = mat[i]; id[k] = id[i];
-    ++k;
-  }
-  n = k;
+  const std::size_t n0 = n;
+  n -= removed;
   // Shrinking keeps the capacity: no allocation.
+  forEachState(*this, [this, n0](auto, auto& v) {
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < n0; ++i)
+      if (keep[i]) v[k++] = v[i];
+    v.resize(n);
+  });
   a.resize(n);
-  for (auto* v : {&e, &m, &rhoRef, &x0, &z0, &vx0, &vz0, &e0, &rho0, &ax0, &az0, &de0, &drho0,
-                  &phi0, &ax1, &az1, &de1})
-    v->resize(n);
-  mat.resize(n);
-  id.resize(n);
-  keep.resize(n);
+  resizeWork();
 }
 
 Stepper::Stepper(const ParticleSystem& ps, std::vector<eos::Eos> materials, StepperConfig config)
@@ -280,13 +259,12 @@ Totals Stepper::outflow() const { return impl_->out; }
 ParticleSystem Stepper::particles() const {
   const Impl& s = *impl_;
   ParticleSystem ps;
-  ps.resize(s.n);
-  for (std::size_t i = 0; i < s.n; ++i) {
-    ps.x[i] = s.a.x[i]; ps.z[i] = s.a.z[i]; ps.vx[i] = s.a.vx[i]; ps.vz[i] = s.a.vz[i];
-    ps.rho[i] = s.a.rho[i]; ps.e[i] = s.e[i]; ps.p[i] = s.a.p[i]; ps.c[i] = s.a.c[i];
-    ps.m[i] = s.m[i]; ps.h[i] = s.a.h[i]; ps.rhoRef[i] = s.rhoRef[i];
-    ps.material[i] = s.mat[i]; ps.object[i] = s.a.obj[i]; ps.id[i] = s.id[i];
-  }
+  // The pair arrays also hold the ghosts: only the n reals are copied.
+  const auto copy = [&](auto member, const auto& v) {
+    (ps.*member).assign(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(s.n));
+  };
+  Impl::forEachState(s, copy);
+  Impl::forEachDerived(s, copy);
   return ps;
 }
 

@@ -1,9 +1,8 @@
 //! @file Snapshot fields and integral totals of the TVD state.
-#include <algorithm>
 #include <cmath>
 
 #include "eos_line.hpp"
-#include "hvi/common/units.hpp"
+#include "hvi/common/snapshot.hpp"
 #include "hvi/tvd/tvd.hpp"
 
 namespace hvi::tvd {
@@ -11,19 +10,14 @@ namespace hvi::tvd {
 Snapshot TvdSolver::snapshot() const {
   const long cells = grid_.cells();
   const auto n = static_cast<std::size_t>(cells);
-  Snapshot s;
-  s.time = time_;
-  s.step = step_;
-  s.solver = "tvd";
-  s.geometry = geometry_;
-  s.kind = Snapshot::Kind::Grid;
+  Snapshot s = makeSnapshot("tvd", Snapshot::Kind::Grid, geometry_, time_, step_);
   s.grid = grid_;
-  Field rho{"density", units::densityName, 1, std::vector<double>(n, 0.0)};
-  Field p{"pressure", units::pressureName, 1, std::vector<double>(n, 0.0)};
-  Field v{"velocity", units::velocityName, 2, std::vector<double>(2 * n, 0.0)};
-  Field e{"specific_energy", units::energyName, 1, std::vector<double>(n, 0.0)};
-  Field mat{"material", "1", 1, std::vector<double>(n, -1.0)};
-  Field obj{"object", "1", 1, std::vector<double>(n, -1.0)};
+  Field rho = makeField(Quantity::Density, geometry_, n);
+  Field p = makeField(Quantity::Pressure, geometry_, n);
+  Field v = makeField(Quantity::Velocity, geometry_, n);
+  Field e = makeField(Quantity::SpecificEnergy, geometry_, n);
+  Field mat = makeField(Quantity::Material, geometry_, n, -1.0);
+  Field obj = makeField(Quantity::Object, geometry_, n, -1.0);
 
   for (int id = 0; id < static_cast<int>(materials_.size()); ++id) {
     if (!markersOn_ && id != singleMaterial_) continue;
@@ -56,17 +50,15 @@ Snapshot TvdSolver::snapshot() const {
         materials_[static_cast<std::size_t>(id)].eos);
   }
   if (phaseOn_) {
-    // As in the SPH snapshots: the Tillotson phase from e against the incipient (e1) and full
-    // (e2) vaporisation energies, and the vapour fraction (e - e1) / (e2 - e1) clamped to [0, 1].
-    Field frac{"vapour_fraction", "1", 1, std::vector<double>(n, 0.0)};
-    Field phase{"phase", "1", 1, std::vector<double>(n, 0.0)};
+    // As in the SPH snapshots (eos::phaseState); vacuum cells stay 0.
+    Field frac = makeField(Quantity::VapourFraction, geometry_, n);
+    Field phase = makeField(Quantity::Phase, geometry_, n);
     for (std::size_t c = 0; c < n; ++c) {
       if (mat.data[c] < 0.0) continue;
-      const auto* t = std::get_if<eos::Tillotson>(
-          &materials_[static_cast<std::size_t>(mat.data[c])].eos);
-      if (t == nullptr) continue;
-      frac.data[c] = std::clamp((e.data[c] - t->e1) / (t->e2 - t->e1), 0.0, 1.0);
-      phase.data[c] = static_cast<double>(static_cast<int>(t->phase(e.data[c])));
+      const eos::PhaseState st =
+          eos::phaseState(materials_[static_cast<std::size_t>(mat.data[c])].eos, e.data[c]);
+      frac.data[c] = st.vapourFraction;
+      phase.data[c] = static_cast<double>(static_cast<int>(st.phase));
     }
     s.fields = {std::move(rho), std::move(p),   std::move(v),    std::move(e),
                 std::move(mat), std::move(obj), std::move(frac), std::move(phase)};

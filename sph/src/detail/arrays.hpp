@@ -8,16 +8,32 @@ namespace hvi::sph::detail {
 //! Per-particle values of the pair sums (pair_force.hpp's PairState as arrays). Real particles
 //! come first; ghosts follow and hold copies of their parents (mirrored position, velocity).
 struct PairArrays {
-  std::vector<double> x, z, vx, vz, rho, p, c, h;
+  // Mirrored by a ghost: its parent's, reflected in the wall or the axis.
+  std::vector<double> x, z, vx, vz;
+  // Copied by a ghost at every refresh.
+  std::vector<double> rho, p, c;
   std::vector<double> mu;   //!< kernel weight: m (planar) or m / (2 pi r) (r-z)
   std::vector<double> rw;   //!< radius weight: 1 (planar) or r (r-z)
   std::vector<double> q;    //!< rw P / rho^2
   std::vector<double> lam;  //!< -v_r / r (r-z), 0 planar
+  // Fixed per particle: copied when the ghosts are made.
+  std::vector<double> h;
   std::vector<int> obj;
 
+  // The lists of the groups above (boundary.cpp's ghosts and resize go through them).
+  template <class F>
+  void forEachCopied(F&& f) {
+    f(rho); f(p); f(c); f(mu); f(rw); f(q); f(lam);
+  }
+  template <class F>
+  void forEachFixed(F&& f) {
+    f(h); f(obj);
+  }
   void resize(std::size_t n) {
-    for (auto* v : {&x, &z, &vx, &vz, &rho, &p, &c, &h, &mu, &rw, &q, &lam}) v->resize(n);
-    obj.resize(n);
+    const auto sized = [n](auto& v) { v.resize(n); };
+    for (auto* v : {&x, &z, &vx, &vz}) sized(*v);
+    forEachCopied(sized);
+    forEachFixed(sized);
   }
   [[nodiscard]] std::size_t size() const { return x.size(); }
 };

@@ -26,6 +26,33 @@ struct Stepper::Impl {
   //! Throws SimulationError naming the particle that set a collapsed dt.
   [[noreturn]] void throwCollapse(double dt) const;
 
+  // The one list of the per-particle state a step starts from, as f(ParticleSystem member,
+  // stepper array): construction copies it in, outflow removal compacts it, particles() copies
+  // it out and the checkpoint stores it, in this order (which is the checkpoint format).
+  // rho, p and c are not in it: corrector() derives them from it.
+  template <class Self, class F>
+  static void forEachState(Self& s, F&& f) {
+    using P = ParticleSystem;
+    f(&P::x, s.a.x); f(&P::z, s.a.z); f(&P::vx, s.a.vx); f(&P::vz, s.a.vz); f(&P::h, s.a.h);
+    f(&P::object, s.a.obj); f(&P::e, s.e); f(&P::m, s.m); f(&P::rhoRef, s.rhoRef);
+    f(&P::material, s.mat); f(&P::id, s.id);
+  }
+  // What corrector() derives from the state, copied out by particles().
+  template <class Self, class F>
+  static void forEachDerived(Self& s, F&& f) {
+    using P = ParticleSystem;
+    f(&P::rho, s.a.rho); f(&P::p, s.a.p); f(&P::c, s.a.c);
+  }
+  // Every ParticleSystem array is in one of the two lists above.
+  static_assert(sizeof(ParticleSystem) == 14 * sizeof(std::vector<double>));
+  // Sizes the step work arrays to the n real particles (never stored: each step rewrites them).
+  void resizeWork() {
+    for (auto* v : {&x0, &z0, &vx0, &vz0, &e0, &rho0, &ax0, &az0, &de0, &drho0, &phi0, &ax1, &az1,
+                    &de1})
+      v->resize(n);
+    keep.resize(n);
+  }
+
   StepperConfig cfg;
   std::vector<eos::Eos> materials;
   detail::ForcePass passCached = nullptr, passFresh = nullptr;

@@ -19,9 +19,9 @@
 #include "hvi/cases/load.hpp"
 #include "hvi/common/error.hpp"
 #include "hvi/io/output.hpp"
+#include "hvi/sph/fill.hpp"
 #include "hvi/sph/sph.hpp"
 #include "hvi/tvd/tvd.hpp"
-#include "stepper_solver.hpp"
 
 namespace hvi::hard {
 namespace fs = std::filesystem;
@@ -48,7 +48,6 @@ std::vector<std::string> solverOverrides(const std::string& solver) {
 
 const sph::Stepper* sphStepper(const Solver& s) {
   if (const auto* p = dynamic_cast<const sph::SphSolver*>(&s)) return &p->stepper();
-  if (const auto* p = dynamic_cast<const StepperSolver*>(&s)) return &p->stepper();
   return nullptr;
 }
 
@@ -297,6 +296,15 @@ void writeJson(const RunResult& r, const fs::path& file) {
 }
 
 }  // namespace
+
+std::unique_ptr<Solver> makeShiftedSph(const cases::Scene& scene, int object, double dz) {
+  sph::ParticleSystem ps = sph::fillBodies(scene);
+  for (std::size_t i = 0; i < ps.size(); ++i)
+    if (ps.object[i] == object) ps.z[i] += dz;
+  // The mass iteration is per object: a rigid shift of one object leaves its masses as they are
+  // without the shift.
+  return std::make_unique<sph::SphSolver>(scene, std::move(ps));
+}
 
 RunResult runHardCase(const RunSetup& setup) {
   const auto fmtOpt = [](const std::optional<double>& v) {

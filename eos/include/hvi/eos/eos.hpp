@@ -1,5 +1,6 @@
 //! @file One EOS interface for both solvers: a closed variant, dispatched once per material.
 #pragma once
+#include <algorithm>
 #include <string>
 #include <variant>
 
@@ -27,6 +28,21 @@ inline EosState state(const Eos& eos, double rho, double e) {
 inline double referenceDensity(const Eos& eos) {
   return std::visit([](const auto& m) { return m.referenceDensity(); }, eos);
 }
+
+//! Phase bookkeeping (effect phase_bookkeeping) at specific energy e: the Tillotson phase from e
+//! against the incipient (e1) and full (e2) vaporisation energies and the vapour fraction
+//! (e - e1) / (e2 - e1) clamped to [0, 1]. The other EOS model no vaporisation: solid, 0.
+//! The one definition both solvers' snapshots use.
+struct PhaseState {
+  double vapourFraction = 0.0;
+  Phase phase = Phase::Solid;
+};
+inline PhaseState phaseState(const Eos& eos, double e) {
+  const auto* t = std::get_if<Tillotson>(&eos);
+  if (t == nullptr) return {};
+  return {std::clamp((e - t->e1) / (t->e2 - t->e1), 0.0, 1.0), t->phase(e)};
+}
+
 //! "tillotson", "ideal_gas" or "mie_gruneisen".
 std::string kindName(const Eos& eos);
 
