@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "detail/keys.hpp"
 #include "hvi/cases/effects.hpp"
 
 namespace hvi::cases {
@@ -32,6 +33,14 @@ std::string markdownTable(const Row& header, const std::vector<Row>& rows) {
 
 std::string code(std::string_view s) { return "`" + std::string(s) + "`"; }
 
+template <class S>
+void addKeys(std::vector<Row>& rows, const std::string& prefix,
+             std::span<const detail::KeyRow<S>> keys) {
+  for (const auto& k : keys)
+    rows.push_back({code(prefix + std::string(k.key)), std::string(k.docValue),
+                    std::string(k.docDefault)});
+}
+
 }  // namespace
 
 std::string effectTableMarkdown() {
@@ -43,6 +52,19 @@ std::string effectTableMarkdown() {
     rows.push_back(std::move(r));
   }
   return markdownTable({"effect", "meaning", "sph", "tvd", "riemann"}, rows);
+}
+
+std::string keyTableMarkdown(std::initializer_list<std::string_view> sections) {
+  std::vector<Row> rows;
+  for (std::string_view sec : sections) {
+    const std::string prefix = sections.size() > 1 ? std::string(sec) + "." : "";
+    if (sec == "time") addKeys(rows, prefix, detail::timeKeys());
+    if (sec == "sph") addKeys(rows, prefix, detail::sphKeys());
+    if (sec == "tvd") addKeys(rows, prefix, detail::tvdKeys());
+    if (sec == "riemann") addKeys(rows, prefix, detail::riemannKeys());
+    if (sec == "output") addKeys(rows, prefix, detail::outputKeys());
+  }
+  return markdownTable({"key", "value", "default"}, rows);
 }
 
 }  // namespace hvi::cases

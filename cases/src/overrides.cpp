@@ -8,6 +8,7 @@
 #include <span>
 #include <variant>
 
+#include "detail/keys.hpp"
 #include "detail/parse.hpp"
 #include "detail/schema.hpp"
 #include "hvi/common/error.hpp"
@@ -96,7 +97,7 @@ std::span<const std::string_view> keysOf(Kind k) {
     case Kind::Root:
       return kRootKeys;
     case Kind::Time:
-      return kTimeKeys;
+      return keyNames("time");
     case Kind::Domain:
       return kDomainKeys;
     case Kind::Boundaries:
@@ -106,13 +107,13 @@ std::span<const std::string_view> keysOf(Kind k) {
     case Kind::Body:
       return kBodyKeys;
     case Kind::Sph:
-      return kSphKeys;
+      return keyNames("sph");
     case Kind::Tvd:
-      return kTvdKeys;
+      return keyNames("tvd");
     case Kind::Riemann:
-      return kRiemannKeys;
+      return keyNames("riemann");
     case Kind::Output:
-      return kOutputKeys;
+      return keyNames("output");
     default:
       return {};
   }

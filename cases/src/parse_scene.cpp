@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include "detail/keys.hpp"
 #include "detail/parse.hpp"
 #include "detail/schema.hpp"
 #include "hvi/cases/load.hpp"
@@ -51,9 +52,8 @@ void parseEffects(const TableReader& root, Scene& scene) {
 
 void parseTime(const TableReader& root, Scene& scene) {
   const auto t = root.subTable("time", true);
-  t->rejectUnknown(kTimeKeys);
-  scene.tStart = t->quantity("start", Dimension::Time, 0.0);
-  scene.tEnd = t->quantity("end", Dimension::Time);
+  t->rejectUnknown(keyNames("time"));
+  readKeys(*t, timeKeys(), scene);
   t->check(scene.tEnd > scene.tStart, "end",
            "must be after time.start (" + shortNumber(scene.tStart) + " us)", "end > start");
 }

@@ -1,8 +1,10 @@
 //! @file The resolved scene as TOML: every default filled in, internal units as bare numbers.
 #include <fmt/format.h>
 
+#include <span>
 #include <sstream>
 
+#include "detail/keys.hpp"
 #include "detail/reader.hpp"
 #include "hvi/cases/load.hpp"
 #include "hvi/cases/names.hpp"
@@ -21,6 +23,38 @@ std::string num(double v) {
 
 std::string pair(double a, double b) { return fmt::format("[{}, {}]", num(a), num(b)); }
 std::string vec(Vec2 v) { return pair(v.x, v.z); }
+
+// One key of a section table as TOML; output.times, the one list, is written by its section.
+template <class S>
+void writeKeys(std::ostringstream& o, std::span<const detail::KeyRow<S>> rows, const S& s) {
+  using detail::ValueKind;
+  for (const auto& r : rows) {
+    if (r.kind == ValueKind::TimeList) continue;
+    const double v = r.get(s);
+    o << r.key << " = ";
+    switch (r.kind) {
+      case ValueKind::Number:
+      case ValueKind::Quantity:
+        o << num(v);
+        break;
+      case ValueKind::Integer:
+        o << static_cast<long long>(v);
+        break;
+      case ValueKind::Choice:
+        o << "\"" << (v < static_cast<double>(r.choices().size())
+                            ? r.choices()[static_cast<std::size_t>(v)]
+                            : std::string_view("?"))
+          << "\"";
+        break;
+      case ValueKind::Flag:
+        o << (v != 0.0 ? "true" : "false");
+        break;
+      case ValueKind::TimeList:
+        break;
+    }
+    o << "\n";
+  }
+}
 
 struct EosWriter {
   std::ostringstream& o;
@@ -80,7 +114,8 @@ std::string toToml(const Scene& s) {
     o << (first ? "" : ", ") << "\"" << toString(e) << "\"";
     first = false;
   }
-  o << "]\n\n[time]\nstart = " << num(s.tStart) << "\nend = " << num(s.tEnd) << "\n";
+  o << "]\n\n[time]\n";
+  writeKeys(o, detail::timeKeys(), s);
 
   const Domain& d = s.domain;
   o << "\n[domain]\nx = " << pair(d.xmin, d.xmax) << "\nz = " << pair(d.zmin, d.zmax)
@@ -107,25 +142,17 @@ std::string toToml(const Scene& s) {
       << "\nspecific_energy = " << num(b.specificEnergy) << "\n";
   }
 
-  const SphParams& p = s.sph;
-  o << "\n[sph]\nspacing = " << num(p.spacing) << "\nh_factor = " << num(p.hFactor)
-    << "\nkernel = \"" << toString(p.kernel) << "\"\nlattice = \"" << toString(p.lattice)
-    << "\"\nalpha = " << num(p.alpha) << "\nbeta = " << num(p.beta) << "\ncfl = " << num(p.cfl)
-    << "\nmass_tolerance = " << num(p.massTolerance)
-    << "\ndelete_fraction = " << num(p.deleteFraction)
-    << "\nmax_mass_iterations = " << p.maxMassIterations << "\n";
-  const TvdParams& t = s.tvd;
-  o << "\n[tvd]\ncell_size = " << num(t.cellSize) << "\nlimiter = \"" << toString(t.limiter)
-    << "\"\ncfl = " << num(t.cfl) << "\nmarker_spacing = " << num(t.markerSpacing)
-    << "\nvacuum_density = " << num(t.vacuumDensity) << "\n";
-  o << "\n[riemann]\ncells = " << s.riemann.cells << "\ninterface = " << num(s.riemann.interface)
-    << "\n";
+  o << "\n[sph]\n";
+  writeKeys(o, detail::sphKeys(), s.sph);
+  o << "\n[tvd]\n";
+  writeKeys(o, detail::tvdKeys(), s.tvd);
+  o << "\n[riemann]\n";
+  writeKeys(o, detail::riemannKeys(), s.riemann);
   o << "\n[output]\ntimes = [";
   for (std::size_t i = 0; i < s.output.times.size(); ++i)
     o << (i ? ", " : "") << num(s.output.times[i]);
-  o << "]\nhdf5 = " << (s.output.hdf5 ? "true" : "false")
-    << "\nvtk = " << (s.output.vtk ? "true" : "false")
-    << "\ncheckpoint_every = " << num(s.output.checkpointEvery) << "\n";
+  o << "]\n";
+  writeKeys(o, detail::outputKeys(), s.output);
   return o.str();
 }
 

@@ -1,5 +1,6 @@
-//! @file The keys a scene file may contain, per table: one list for the parser's unknown-key
-//! check and the `--set` path check.
+//! @file The keys of the irregular scene tables (root, [domain], [materials.*], [[bodies]]): one
+//! list for the parser's unknown-key check and the `--set` path check. The regular sections
+//! ([time], [sph], [tvd], [riemann], [output]) are key tables: detail/keys.hpp.
 #pragma once
 #include <array>
 #include <string_view>
@@ -9,17 +10,8 @@ namespace hvi::cases::detail {
 inline constexpr std::array<std::string_view, 13> kRootKeys{
     "title",     "units",  "geometry", "solver", "effects", "time",  "domain",
     "materials", "bodies", "sph",      "tvd",    "riemann", "output"};
-inline constexpr std::array<std::string_view, 2> kTimeKeys{"start", "end"};
 inline constexpr std::array<std::string_view, 3> kDomainKeys{"x", "z", "boundaries"};
 inline constexpr std::array<std::string_view, 4> kBoundaryKeys{"xmin", "xmax", "zmin", "zmax"};
-inline constexpr std::array<std::string_view, 10> kSphKeys{
-    "spacing", "h_factor", "kernel",         "lattice",         "alpha",
-    "beta",    "cfl",      "mass_tolerance", "delete_fraction", "max_mass_iterations"};
-inline constexpr std::array<std::string_view, 5> kTvdKeys{"cell_size", "limiter", "cfl",
-                                                          "marker_spacing", "vacuum_density"};
-inline constexpr std::array<std::string_view, 2> kRiemannKeys{"cells", "interface"};
-inline constexpr std::array<std::string_view, 4> kOutputKeys{"times", "hdf5", "vtk",
-                                                             "checkpoint_every"};
 
 // Materials: common keys, then the parameters of each EOS.
 inline constexpr std::array<std::string_view, 4> kMaterialCommonKeys{"preset", "eos", "rho0",

@@ -112,6 +112,10 @@ TEST(SceneDocs, TablesMatchTheParser) {
   const std::string doc = test::readText(fs::path(HVI_SOURCE_DIR) / "docs" / "scenes.md");
   const std::string effects = effectTableMarkdown();
   EXPECT_NE(doc.find(effects), std::string::npos) << "docs/scenes.md lacks:\n" << effects;
+  for (const std::string& keys :
+       {keyTableMarkdown({"time"}), keyTableMarkdown({"sph", "tvd", "riemann"}),
+        keyTableMarkdown({"output"})})
+    EXPECT_NE(doc.find(keys), std::string::npos) << "docs/scenes.md lacks:\n" << keys;
 }
 
 }  // namespace

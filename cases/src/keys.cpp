@@ -1,0 +1,148 @@
+//! @file The key tables of [time], [sph], [tvd], [riemann] and [output]: type, field, check
+//! and documentation of each key, in the order the parser reads and toToml writes them.
+#include "detail/keys.hpp"
+
+#include <array>
+#include <string>
+
+#include "hvi/cases/names.hpp"
+
+namespace hvi::cases::detail {
+namespace {
+
+using K = ValueKind;
+
+constexpr std::array<KeyRow<Scene>, 2> kTime{{
+    {.key = "start", .kind = K::Quantity, HVI_KEY_FIELD(Scene, tStart), .dimension = Dimension::Time,
+     .docValue = "time", .docDefault = "`\"0 us\"`"},
+    // end > start is checked once both are read (parse_scene.cpp).
+    {.key = "end", .kind = K::Quantity, HVI_KEY_FIELD(Scene, tEnd), .dimension = Dimension::Time,
+     .docValue = "**required**, time > start", .required = true},
+}};
+
+constexpr std::array<KeyRow<SphParams>, 10> kSph{{
+    {.key = "spacing", .kind = K::Quantity, HVI_KEY_FIELD(SphParams, spacing),
+     .ok = [](double v) { return v > 0.0; }, .problem = "must be > 0", .allowed = "a length > 0",
+     .docValue = "length > 0, particle spacing dx", .docDefault = "`0.01 cm`"},
+    {.key = "h_factor", .kind = K::Number, HVI_KEY_FIELD(SphParams, hFactor),
+     .ok = [](double v) { return v > 0.0; }, .problem = "must be > 0 (h = h_factor * spacing)",
+     .allowed = "h_factor > 0", .docValue = "> 0, h = h_factor * spacing", .docDefault = "1.0"},
+    {.key = "kernel", .kind = K::Choice, HVI_KEY_FIELD(SphParams, kernel), .choices = kernelNames,
+     .docValue = "`\"gaussian\"`, `\"cubic_spline\"`", .docDefault = "`\"gaussian\"`"},
+    {.key = "lattice", .kind = K::Choice, HVI_KEY_FIELD(SphParams, lattice),
+     .choices = latticeNames, .docValue = "`\"square\"`, `\"hexagonal\"`",
+     .docDefault = "`\"square\"`"},
+    {.key = "alpha", .kind = K::Number, HVI_KEY_FIELD(SphParams, alpha),
+     .ok = [](double v) { return v >= 0.0; }, .problem = "must be >= 0", .allowed = "alpha >= 0",
+     .docValue = ">= 0, Monaghan viscosity alpha_Pi", .docDefault = "1.0"},
+    {.key = "beta", .kind = K::Number, HVI_KEY_FIELD(SphParams, beta),
+     .ok = [](double v) { return v >= 0.0; }, .problem = "must be >= 0", .allowed = "beta >= 0",
+     .docValue = ">= 0, Monaghan viscosity beta_Pi", .docDefault = "2.0"},
+    {.key = "cfl", .kind = K::Number, HVI_KEY_FIELD(SphParams, cfl),
+     .ok = [](double v) { return v > 0.0 && v <= 1.0; }, .problem = "must be in (0, 1]",
+     .allowed = "0 < cfl <= 1", .docValue = "(0, 1]", .docDefault = "0.3"},
+    // The residual |rho0/rho - 1| is a sum of 30-60 kernel terms, each rounded to 1e-16: a
+    // tolerance below 1e-13 is never met and the iteration would only stop at its cap.
+    {.key = "mass_tolerance", .kind = K::Number, HVI_KEY_FIELD(SphParams, massTolerance),
+     .ok = [](double v) { return v >= 1e-13 && v < 1.0; },
+     .problem = "must be in [1e-13, 1) (below 1e-13 round-off keeps the residual from reaching it)",
+     .allowed = "1e-13 <= mass_tolerance < 1",
+     .docValue = "[1e-13, 1), bound of the mass iteration (below 1e-13 round-off never lets it "
+                 "converge)",
+     .docDefault = "1e-9"},
+    {.key = "delete_fraction", .kind = K::Number, HVI_KEY_FIELD(SphParams, deleteFraction),
+     .ok = [](double v) { return v >= 0.0 && v < 1.0; }, .problem = "must be in [0, 1)",
+     .allowed = "0 <= delete_fraction < 1", .docValue = "[0, 1), delete if m_i / max m below it",
+     .docDefault = "1e-4"},
+    // docs/sph.md: ~550 passes at h = dx, ~4e5 at h = 2 dx (the slowest mode is damped by
+    // 1 - exp(-pi^2 h^2 / 4 dx^2) per pass); a pass over 1e5 particles takes ~5 ms, so 1e6
+    // passes are already ~1.5 h. More can only mean an iteration that does not converge.
+    {.key = "max_mass_iterations", .kind = K::Integer, HVI_KEY_FIELD(SphParams, maxMassIterations),
+     .ok = [](double v) { return v >= 1 && v <= 1e6; }, .problem = "must be in [1, 1000000]",
+     .allowed = "an integer in [1, 1000000]",
+     .docValue = "integer in [1, 1e6] (1e6 passes are hours; docs/sph.md)", .docDefault = "10000"},
+}};
+
+constexpr std::array<KeyRow<TvdParams>, 5> kTvd{{
+    {.key = "cell_size", .kind = K::Quantity, HVI_KEY_FIELD(TvdParams, cellSize),
+     .ok = [](double v) { return v > 0.0; }, .problem = "must be > 0", .allowed = "a length > 0",
+     .docValue = "length > 0, dx = dz", .docDefault = "`0.015 cm`"},
+    {.key = "limiter", .kind = K::Choice, HVI_KEY_FIELD(TvdParams, limiter),
+     .choices = limiterNames, .docValue = "`\"minmod\"`, `\"van_leer\"`, `\"superbee\"`",
+     .docDefault = "`\"minmod\"`"},
+    // The positivity fallback (Rusanov) flux of the split sweeps needs CFL <= 1/2.
+    {.key = "cfl", .kind = K::Number, HVI_KEY_FIELD(TvdParams, cfl),
+     .ok = [](double v) { return v > 0.0 && v <= 0.5; },
+     .problem = "must be in (0, 0.5] for the TVD scheme", .allowed = "0 < cfl <= 0.5",
+     .docValue = "(0, 0.5] (the positivity fallback flux)", .docDefault = "0.4"},
+    {.key = "marker_spacing", .kind = K::Number, HVI_KEY_FIELD(TvdParams, markerSpacing),
+     .ok = [](double v) { return v > 0.0 && v <= 10.0; }, .problem = "must be in (0, 10] cells",
+     .allowed = "0 < marker_spacing <= 10 (in cells)",
+     .docValue = "(0, 10], target marker spacing in cells", .docDefault = "0.5"},
+    {.key = "vacuum_density", .kind = K::Number, HVI_KEY_FIELD(TvdParams, vacuumDensity),
+     .ok = [](double v) { return v > 0.0 && v < 1.0; },
+     .problem = "must be in (0, 1) (a fraction of rho0)", .allowed = "0 < vacuum_density < 1",
+     .docValue = "(0, 1), vacuum below this fraction of rho0", .docDefault = "1e-6"},
+}};
+
+// Measured on sod_x at 1e6 cells: 170 MB peak memory, 49 MB of HDF5 + VTK per snapshot, 2 s for
+// three snapshots; 1e8 cells needed ~15 GB of each (issue 11). A 1-D exact profile finer than
+// 1e6 cells resolves nothing that a 2-D solver it is compared with could (the 5e7-cell TVD cap
+// is ~7000 cells a side).
+constexpr std::array<KeyRow<RiemannParams>, 2> kRiemann{{
+    {.key = "cells", .kind = K::Integer, HVI_KEY_FIELD(RiemannParams, cells),
+     .ok = [](double v) { return v >= 2 && v <= 1e6; }, .problem = "must be in [2, 1e6]",
+     .allowed = "an integer in [2, 1000000]",
+     .docValue = "integer in [2, 1e6], sampling cells (1e6: ~170 MB of memory, ~50 MB of disk "
+                 "per snapshot)",
+     .docDefault = "400"},
+    // Its default, where two rect bodies meet, is set before the table is read.
+    {.key = "interface", .kind = K::Quantity, HVI_KEY_FIELD(RiemannParams, interface),
+     .docValue = "length, where the two bodies meet", .docDefault = "where they meet, else 0.5 cm"},
+}};
+
+constexpr std::array<KeyRow<Output>, 4> kOutput{{
+    {.key = "times", .kind = K::TimeList,
+     .docValue = "array of times, strictly increasing, in (start, end]",
+     .docDefault = "`[]` (the driver always writes `end`)"},
+    {.key = "hdf5", .kind = K::Flag, HVI_KEY_FIELD(Output, hdf5), .docValue = "boolean",
+     .docDefault = "true"},
+    {.key = "vtk", .kind = K::Flag, HVI_KEY_FIELD(Output, vtk), .docValue = "boolean",
+     .docDefault = "true"},
+    {.key = "checkpoint_every", .kind = K::Quantity, HVI_KEY_FIELD(Output, checkpointEvery),
+     .dimension = Dimension::WallTime, .ok = [](double v) { return v >= 0.0; },
+     .problem = "must be >= 0 (0: at snapshots only)",
+     .allowed = "a wall-clock time >= 0 in s, min or h",
+     .docValue = "wall-clock time >= 0 (`\"30 min\"`); 0: at snapshots only", .docDefault = "0"},
+}};
+
+template <class S, std::size_t N>
+constexpr std::array<std::string_view, N> namesOf(const std::array<KeyRow<S>, N>& rows) {
+  std::array<std::string_view, N> n{};
+  for (std::size_t i = 0; i < N; ++i) n[i] = rows[i].key;
+  return n;
+}
+constexpr auto kTimeNames = namesOf(kTime);
+constexpr auto kSphNames = namesOf(kSph);
+constexpr auto kTvdNames = namesOf(kTvd);
+constexpr auto kRiemannNames = namesOf(kRiemann);
+constexpr auto kOutputNames = namesOf(kOutput);
+
+}  // namespace
+
+std::span<const KeyRow<Scene>> timeKeys() { return kTime; }
+std::span<const KeyRow<SphParams>> sphKeys() { return kSph; }
+std::span<const KeyRow<TvdParams>> tvdKeys() { return kTvd; }
+std::span<const KeyRow<RiemannParams>> riemannKeys() { return kRiemann; }
+std::span<const KeyRow<Output>> outputKeys() { return kOutput; }
+
+std::span<const std::string_view> keyNames(std::string_view section) {
+  if (section == "time") return kTimeNames;
+  if (section == "sph") return kSphNames;
+  if (section == "tvd") return kTvdNames;
+  if (section == "riemann") return kRiemannNames;
+  if (section == "output") return kOutputNames;
+  return {};
+}
+
+}  // namespace hvi::cases::detail
