@@ -17,14 +17,6 @@ constexpr char kMagic[8] = {'H', 'V', 'I', 'S', 'P', 'H', '0', '2'};
 // step sets again.
 constexpr char kMagicV1[8] = {'H', 'V', 'I', 'S', 'P', 'H', '0', '1'};
 
-// The per-particle arrays in checkpoint order. The particle count is stored once before them,
-// so they go without counts.
-template <class State, class F>
-void forEachArray(State& s, F&& f) {
-  f(s.a.x), f(s.a.z), f(s.a.vx), f(s.a.vz), f(s.a.h), f(s.a.obj);
-  f(s.e), f(s.m), f(s.rhoRef), f(s.mat), f(s.id);
-}
-
 }  // namespace
 
 // Density, pressure, sound speed, ghosts and the neighbour list are functions of the stored
@@ -42,7 +34,9 @@ void Stepper::writeState(std::ostream& out) const {
   w.value(s.dt0);
   for (double v : {s.out.mass, s.out.momentumX, s.out.momentumZ, s.out.kinetic, s.out.internal})
     w.value(v);
-  forEachArray(s, [&](const auto& v) { w.elements(v.data(), s.n); });
+  // The per-particle state (Impl::forEachState, in its order); the particle count is stored
+  // once before it, so the arrays go without counts.
+  Impl::forEachState(s, [&](auto, const auto& v) { w.elements(v.data(), s.n); });
 }
 
 void Stepper::readState(std::istream& in) {
@@ -70,13 +64,10 @@ void Stepper::readState(std::istream& in) {
     *v = r.value<double>();
   s.n = n;
   s.a.resize(n);
-  forEachArray(s, [&](auto& v) { r.elements(v, n); });
+  Impl::forEachState(s, [&](auto, auto& v) { r.elements(v, n); });
   for (int k : s.mat)
     if (k < 0 || k >= nmat) throw InputError("SPH checkpoint: material index out of range");
-  for (auto* v : {&s.x0, &s.z0, &s.vx0, &s.vz0, &s.e0, &s.rho0, &s.ax0, &s.az0, &s.de0,
-                  &s.drho0, &s.phi0, &s.ax1, &s.az1, &s.de1})
-    v->resize(n);
-  s.keep.resize(n);
+  s.resizeWork();
   s.corrector();
 }
 
