@@ -13,7 +13,9 @@ namespace hvi::tvd {
 namespace {
 
 constexpr std::uint64_t kMagic = 0x31304456544956ULL;  // "VITVD01" little-endian tag
-constexpr std::uint32_t kVersion = 2;
+// 3: the outflow budget after the ledger (Ledger::outflow); 2 (read too) had none, its
+// boundary budget held the outflow sides and the walls together.
+constexpr std::uint32_t kVersion = 3;
 
 void putBudget(BinaryWriter& w, const Budget& b) {
   for (double v : {b.mass, b.momentumX, b.momentumZ, b.energy}) w.value(v);
@@ -37,19 +39,19 @@ void TvdSolver::writeCheckpoint(std::ostream& out) const {
   w.value(time_);
   w.value(dt0_);
   w.value<std::int64_t>(step_);
-  w.value<std::int64_t>(ownerChangeCount_);
-  for (const Budget* b :
-       {&ledger_.boundary, &ledger_.interfaces, &ledger_.ownerChanges, &ledger_.floors})
+  w.value<std::int64_t>(ownership_.changes());
+  for (const Budget* b : {&ledger_.boundary, &ledger_.interfaces, &ledger_.ownerChanges,
+                          &ledger_.floors, &ledger_.outflow})
     putBudget(w, *b);
   w.array(U_.rho);
   w.array(U_.mx);
   w.array(U_.mz);
   w.array(U_.E);
   if (markersOn_) {
-    w.array(owner_);
-    w.array(normal_);
-    w.array(materialTarget_);
-    markerSet_.write(out);  // its own record, checked by itself
+    w.array(ownership_.owner());
+    w.array(ownership_.normal());
+    w.array(ownership_.targets());
+    ownership_.markers().write(out);  // its own record, checked by itself
   }
 }
 
@@ -58,9 +60,9 @@ void TvdSolver::readCheckpoint(std::istream& in) {
   if (r.value<std::uint64_t>() != kMagic)
     throw InputError("tvd checkpoint: not a TVD solver state (wrong magic number)");
   const auto version = r.value<std::uint32_t>();
-  if (version != kVersion)
-    throw InputError(
-        fmt::format("tvd checkpoint: format version {}, this build reads {}", version, kVersion));
+  if (version != kVersion && version != 2)
+    throw InputError(fmt::format(
+        "tvd checkpoint: format version {}, this build reads 2 and {}", version, kVersion));
   const auto nx = r.value<std::int32_t>(), nz = r.value<std::int32_t>();
   const auto rz = r.value<std::int32_t>(), markers = r.value<std::int32_t>();
   if (nx != grid_.nx || nz != grid_.nz || (rz == 1) != (geometry_ == Geometry::Axisymmetric) ||
@@ -75,6 +77,12 @@ void TvdSolver::readCheckpoint(std::istream& in) {
   Ledger ledger;
   for (Budget* b : {&ledger.boundary, &ledger.interfaces, &ledger.ownerChanges, &ledger.floors})
     *b = getBudget(r);
+  if (version >= 3) {
+    ledger.outflow = getBudget(r);
+  } else {  // the walls' impulse cannot be told apart: all of it counts as outflow
+    ledger.outflow = ledger.boundary.scaled(-1.0);
+    ledger.boundary = Budget{};
+  }
   const auto n = static_cast<std::size_t>(grid_.cells());
   Conserved U;
   r.array(U.rho, n, "density");
@@ -90,16 +98,13 @@ void TvdSolver::readCheckpoint(std::istream& in) {
     r.array(target, materials_.size(), "material target mass");
     MarkerSet ms;
     ms.read(in);
-    owner_.swap(owner);
-    normal_.swap(normal);
-    materialTarget_.swap(target);
-    markerSet_ = std::move(ms);
+    ownership_.restore(std::move(owner), std::move(normal), std::move(target), std::move(ms),
+                       static_cast<long>(changes));
   }
   U_ = std::move(U);
   time_ = t;
   dt0_ = dt0;
   step_ = static_cast<long>(step);
-  ownerChangeCount_ = static_cast<long>(changes);
   ledger_ = ledger;
 }
 

@@ -5,7 +5,6 @@
 
 #include "hvi/common/stop_flag.hpp"
 #include "hvi/tvd/tvd.hpp"
-#include "interface_normals.hpp"
 
 namespace hvi::tvd {
 
@@ -22,7 +21,7 @@ void TvdSolver::initialiseState(const cases::Scene& scene) {
   U_.mx.assign(n, 0.0);
   U_.mz.assign(n, 0.0);
   U_.E.assign(n, 0.0);
-  auto put = [&](std::size_t c, const BodyState& b, double weight) {
+  auto put = [&](std::size_t c, const Ownership::ObjectState& b, double weight) {
     U_.rho[c] += weight * b.rho;
     U_.mx[c] += weight * b.rho * b.vx;
     U_.mz[c] += weight * b.rho * b.vz;
@@ -30,21 +29,11 @@ void TvdSolver::initialiseState(const cases::Scene& scene) {
   };
 
   if (markersOn_) {
-    markerSet_ = MarkerSet::fromBodies(scene, grid_);
-    throwIfStopRequested("the TVD marker lines");
-    markerSet_.rasterize(grid_, owner_, normal_);
-    throwIfStopRequested("the TVD marker lines");
-    detail::interfaceNormals(markerSet_, grid_, owner_, normal_, normalLength_);
-    ownerNew_.assign(n, -1);
-    normalNew_.assign(n, Vec2{});
-    vxOld_.assign(n, 0.0);
-    vzOld_.assign(n, 0.0);
-    vxMid_.assign(n, 0.0);
-    vzMid_.assign(n, 0.0);
+    const std::vector<int>& owner = ownership_.owner();  // rasterised by Ownership::setUp
     for (std::size_t c = 0; c < n; ++c) {
-      if (owner_[c] < 0) continue;
-      const auto o = static_cast<std::size_t>(owner_[c]);
-      BodyState st = bodyStates_[o];
+      if (owner[c] < 0) continue;
+      const auto o = static_cast<std::size_t>(owner[c]);
+      Ownership::ObjectState st = bodyStates_[o];
       if (scene.bodies[o].radial) {  // a radial field is sampled at the cell centre
         const long i = static_cast<long>(c) % grid_.nx, k = static_cast<long>(c) / grid_.nx;
         const Vec2 v = cases::initialVelocity(
@@ -58,7 +47,7 @@ void TvdSolver::initialiseState(const cases::Scene& scene) {
     return;
   }
 
-  const BodyState vacuum{0.5 * rhoCut_[static_cast<std::size_t>(singleMaterial_)], 0.0, 0.0, 0.0};
+  const Ownership::ObjectState vacuum{0.5 * rhoCut_[static_cast<std::size_t>(singleMaterial_)], 0.0, 0.0, 0.0};
   constexpr int S = 4;
   const bool rz = geometry_ == Geometry::Axisymmetric;
   const std::size_t nb = scene.bodies.size();
@@ -108,7 +97,7 @@ void TvdSolver::initialiseState(const cases::Scene& scene) {
         for (std::size_t bi = 0; bi <= nb; ++bi) {
           if (!(weight[bi] > 0.0)) continue;
           if (bi < nb && scene.bodies[bi].radial) {
-            const BodyState& b = bodyStates_[bi];
+            const Ownership::ObjectState& b = bodyStates_[bi];
             U_.rho[cc] += b.rho * weight[bi] / wsum;
             U_.mx[cc] += b.rho * wvx[bi] / wsum;
             U_.mz[cc] += b.rho * wvz[bi] / wsum;

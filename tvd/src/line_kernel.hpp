@@ -24,8 +24,8 @@ inline void fillGhosts(State4& U, int n, Side left, Side right) {
       U[k][g1] = U[k][s == Side::Reflect ? in1 : in0];
     }
     if (s == Side::Reflect) {
-      U[1][g0] = -U[1][g0];
-      U[1][g1] = -U[1][g1];
+      U[kMn][g0] = -U[kMn][g0];
+      U[kMn][g1] = -U[kMn][g1];
     }
   };
   side(left, 2, 3, 1, 0);
@@ -93,20 +93,20 @@ class LineSolver {
   bool stage(State4& V, LineFailure& fail) {
     const int nb = n_ + 4;
     primitiveStates(*C_.materials, C_.singleMaterial, Markers ? W_.mat.data() : nullptr, 0, nb,
-                    V[0].data(), V[1].data(), V[2].data(), V[3].data(), W_.cs.data());
+                    V[kRho].data(), V[kMn].data(), V[kMt].data(), V[kE].data(), W_.cs.data());
     const CellState* cs = W_.cs.data();
     for (int j = 0; j < nb; ++j) {
       if (isVacuum(j)) continue;
-      W_.sqrtRho[j] = std::sqrt(V[0][j]);
-      physicalFlux(V[1][j], V[2][j], V[3][j], cs[j], W_.F[j].data());
+      W_.sqrtRho[j] = std::sqrt(V[kRho][j]);
+      physicalFlux(V[kMn][j], V[kMt][j], V[kE][j], cs[j], W_.F[j].data());
     }
     for (int f = 0; f <= n_ + 2; ++f) {
       if (Markers && W_.kind[f] != FaceKind::Regular) {
         W_.fe[f] = FaceEigen{};
         continue;
       }
-      const double dU[4] = {V[0][f + 1] - V[0][f], V[1][f + 1] - V[1][f], V[2][f + 1] - V[2][f],
-                            V[3][f + 1] - V[3][f]};
+      double dU[4];
+      for (int k = 0; k < 4; ++k) dU[k] = V[k][f + 1] - V[k][f];
       W_.fe[f] = faceEigen(cs[f], cs[f + 1], dU, W_.sqrtRho[f], W_.sqrtRho[f + 1]);
     }
     for (int j = 1; j <= n_ + 2; ++j)
@@ -127,7 +127,7 @@ class LineSolver {
     bool any = false;
     for (int j = 2; j <= n_ + 1; ++j) {
       if (isVacuum(j)) continue;
-      if (!physical(W_.w[0][j], W_.w[1][j], W_.w[2][j], W_.w[3][j])) {
+      if (!physical(W_.w[kRho][j], W_.w[kMn][j], W_.w[kMt][j], W_.w[kE][j])) {
         W_.fallback[j - 1] = W_.fallback[j] = 1;
         any = true;
       }
@@ -142,8 +142,8 @@ class LineSolver {
       for (int j = 2; j <= n_ + 1; ++j) {
         if (isVacuum(j)) continue;
         const int mat = Markers ? W_.mat[j] : C_.singleMaterial;
-        const double r = W_.w[0][j], m = W_.w[1][j], t = W_.w[2][j], E = W_.w[3][j];
-        const bool thin = V[0][j] < C_.rhoThin[mat];
+        const double r = W_.w[kRho][j], m = W_.w[kMn][j], t = W_.w[kMt][j], E = W_.w[kE][j];
+        const bool thin = V[kRho][j] < C_.rhoThin[mat];
         if (!(r > 0.0) || !std::isfinite(E) || !std::isfinite(m) || !std::isfinite(t)) {
           if (!thin) {
             fail.j = j;
@@ -156,28 +156,24 @@ class LineSolver {
           // within the step): it becomes vacuum at rest, the change booked in the ledger.
           const double fill = 0.5 * C_.rhoCut[mat];
           const double vol = 0.5 / W_.invVol[j];
-          const double rho0 = std::isfinite(r) ? r : V[0][j];
-          const double m0 = std::isfinite(m) ? m : V[1][j], t0 = std::isfinite(t) ? t : V[2][j];
-          const double E0 = std::isfinite(E) ? E : V[3][j];
-          B_.floors[0] += vol * (fill - rho0);
-          B_.floors[1] -= vol * m0;
-          B_.floors[2] -= vol * t0;
-          B_.floors[3] -= vol * E0;
-          W_.w[0][j] = fill;
-          W_.w[1][j] = W_.w[2][j] = W_.w[3][j] = 0.0;
+          const double rho0 = std::isfinite(r) ? r : V[kRho][j];
+          const double m0 = std::isfinite(m) ? m : V[kMn][j];
+          const double t0 = std::isfinite(t) ? t : V[kMt][j];
+          const double E0 = std::isfinite(E) ? E : V[kE][j];
+          B_.floors.add(vol * (fill - rho0), -(vol * m0), -(vol * t0), -(vol * E0), C_.axis);
+          W_.w[kRho][j] = fill;
+          W_.w[kMn][j] = W_.w[kMt][j] = W_.w[kE][j] = 0.0;
           continue;
         }
         const double kin = 0.5 * (m * m + t * t) / r;
         if (E < kin) {
           if (thin) {  // nearly empty: drop the velocity rather than invent kinetic energy
             const double vol = 0.5 / W_.invVol[j];
-            B_.floors[1] -= vol * m;
-            B_.floors[2] -= vol * t;
-            B_.floors[3] -= vol * E;
-            W_.w[1][j] = W_.w[2][j] = W_.w[3][j] = 0.0;
+            B_.floors.add(0.0, -(vol * m), -(vol * t), -(vol * E), C_.axis);
+            W_.w[kMn][j] = W_.w[kMt][j] = W_.w[kE][j] = 0.0;
           } else {
-            B_.floors[3] += 0.5 * (kin - E) / W_.invVol[j];
-            W_.w[3][j] = kin;
+            B_.floors.energy += 0.5 * (kin - E) / W_.invVol[j];
+            W_.w[kE][j] = kin;
           }
         }
       }
@@ -243,8 +239,11 @@ class LineSolver {
     const CellState& b = W_.cs[f + 1];
     const double* Fa = W_.F[f].data();
     const double* Fb = W_.F[f + 1].data();
-    const double UL[4] = {V[0][f], V[1][f], V[2][f], V[3][f]};
-    const double UR[4] = {V[0][f + 1], V[1][f + 1], V[2][f + 1], V[3][f + 1]};
+    double UL[4], UR[4];
+    for (int k = 0; k < 4; ++k) {
+      UL[k] = V[k][f];
+      UR[k] = V[k][f + 1];
+    }
     const double smax = std::max(std::abs(a.u) + a.c, std::abs(b.u) + b.c);
     rusanovFlux(UL, UR, Fa, Fb, smax, W_.fluxL[f].data());
     W_.fluxR[f] = W_.fluxL[f];
@@ -255,9 +254,9 @@ class LineSolver {
   void wallFaces() {
     auto wall = [&](int f) {
       for (auto* F : {&W_.fluxL[f], &W_.fluxR[f]}) {
-        (*F)[0] = 0.0;
-        (*F)[2] = 0.0;
-        (*F)[3] = 0.0;
+        (*F)[kRho] = 0.0;
+        (*F)[kMt] = 0.0;
+        (*F)[kE] = 0.0;
       }
     };
     if (L_.left == Side::Reflect) wall(1);
@@ -274,21 +273,25 @@ class LineSolver {
     const double* FR = W_.fluxL[j].data();      // leaving through the right face
     const double* FL = W_.fluxR[j - 1].data();  // entering through the left face
     for (int k = 0; k < 4; ++k) W_.w[k][j] = V[k][j] - lam * (aR * FR[k] - aL * FL[k]);
-    if constexpr (Radial) W_.w[1][j] += C_.dt * 0.5 * (W_.pface[j - 1] + W_.pface[j]) * W_.invR[j];
+    if constexpr (Radial)
+      W_.w[kMn][j] += C_.dt * 0.5 * (W_.pface[j - 1] + W_.pface[j]) * W_.invR[j];
   }
 
   void ledgerFaces() {
     const double h = 0.5 * C_.dt;  // Heun weight of a stage
     for (int f = 1; f <= n_ + 1; ++f) {
+      const double s = h * W_.area[f];
       if (f == 1 && L_.leftEdge) {
-        for (int k = 0; k < 4; ++k) B_.boundary[k] += h * W_.area[f] * W_.fluxR[f][k];
-        B_.edgeMass[0] += h * W_.area[f] * W_.fluxR[f][0];
+        const double* F = W_.fluxR[f].data();
+        B_.edge[0].add(s * F[kRho], s * F[kMn], s * F[kMt], s * F[kE], C_.axis);
       } else if (f == n_ + 1 && L_.rightEdge) {
-        for (int k = 0; k < 4; ++k) B_.boundary[k] -= h * W_.area[f] * W_.fluxL[f][k];
-        B_.edgeMass[1] -= h * W_.area[f] * W_.fluxL[f][0];
+        const double* F = W_.fluxL[f].data();
+        B_.edge[1].add(-(s * F[kRho]), -(s * F[kMn]), -(s * F[kMt]), -(s * F[kE]), C_.axis);
       } else if (Markers && W_.kind[f] != FaceKind::Regular) {
-        for (int k = 0; k < 4; ++k)
-          B_.interfaces[k] += h * W_.area[f] * (W_.fluxR[f][k] - W_.fluxL[f][k]);
+        const double* R = W_.fluxR[f].data();
+        const double* L = W_.fluxL[f].data();
+        B_.interfaces.add(s * (R[kRho] - L[kRho]), s * (R[kMn] - L[kMn]), s * (R[kMt] - L[kMt]),
+                          s * (R[kE] - L[kE]), C_.axis);
       }
     }
   }
@@ -300,12 +303,11 @@ class LineSolver {
     for (int j = 2; j <= n_ + 1; ++j) {
       if (isVacuum(j)) continue;
       const int m = Markers ? W_.mat[j] : C_.singleMaterial;
-      if (U[0][j] >= C_.rhoCut[m] || (U[1][j] == 0.0 && U[2][j] == 0.0 && U[3][j] == 0.0)) continue;
+      if (U[kRho][j] >= C_.rhoCut[m] || (U[kMn][j] == 0.0 && U[kMt][j] == 0.0 && U[kE][j] == 0.0))
+        continue;
       const double vol = weight / W_.invVol[j];
-      B_.floors[1] -= U[1][j] * vol;
-      B_.floors[2] -= U[2][j] * vol;
-      B_.floors[3] -= U[3][j] * vol;
-      U[1][j] = U[2][j] = U[3][j] = 0.0;
+      B_.floors.add(0.0, -(U[kMn][j] * vol), -(U[kMt][j] * vol), -(U[kE][j] * vol), C_.axis);
+      U[kMn][j] = U[kMt][j] = U[kE][j] = 0.0;
     }
   }
 

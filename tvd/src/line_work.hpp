@@ -6,6 +6,7 @@
 
 #include "hvi/cases/scene.hpp"
 #include "hvi/tvd/characteristics.hpp"
+#include "hvi/tvd/state.hpp"
 
 namespace hvi::tvd::detail {
 
@@ -25,10 +26,16 @@ enum class FaceKind : signed char {
   Void,         //!< vacuum on both sides: no flux
 };
 
-//! Line-local amounts (mass, normal momentum, tangential momentum, energy).
+//! Components of a line's conserved vector (the first index of LineWork::u0, u1, w and of the
+//! fluxes), in line coordinates: density, momentum along the line (normal to its faces),
+//! momentum across it (tangential), total energy density.
+enum Component : int { kRho = 0, kMn = 1, kMt = 2, kE = 3 };
+
+//! What one line added to the domain, per unit of the line's cross-section (the sweep scales
+//! it to the solver's units), in x/z components (SweepContext::axis).
 struct LineBudget {
-  std::array<double, 4> boundary{}, interfaces{}, floors{};
-  std::array<double, 2> edgeMass{};  // mass in through the low / high domain edge
+  Budget interfaces, floors;
+  std::array<Budget, 2> edge;  //!< through the low / high domain edge (inflow positive)
 };
 
 //! Buffers for one line of up to `capacity` cells plus two ghost cells at each end. Sized once,
@@ -63,6 +70,7 @@ struct SweepContext {
   double entropyFix = 0.1;
   int contactIterations = 2;
   double dt = 0.0;
+  int axis = 0;  //!< the lines run along x (0) or z (1): where the budgets book kMn and kMt
 };
 
 //! One line: `n` cells loaded at buffer positions 2..n+1.

@@ -1,79 +1,130 @@
 //! @file Marker step: move the marker lines, rebuild the configuration array, re-initialise
-//! the cells that change owner.
+//! the cells that change owner, renormalise each material's mass.
+#include "hvi/tvd/ownership.hpp"
+
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
-#include "hvi/tvd/tvd.hpp"
+#include "hvi/common/stop_flag.hpp"
 #include "interface_normals.hpp"
 
 namespace hvi::tvd {
-namespace {
+
+double CellVolumes::operator()(long cell) const {
+  const double a = grid.dx * grid.dz;
+  if (!rz) return a;
+  return 2.0 * std::numbers::pi * cellX[static_cast<std::size_t>(cell % grid.nx)] * a;
+}
+
+void Ownership::setUp(const cases::Scene& scene, const CellVolumes& cells,
+                      std::vector<int> material, std::vector<ObjectState> initial, int materials,
+                      int threads) {
+  cells_ = cells;
+  threads_ = threads;
+  objectMaterial_ = std::move(material);
+  initial_ = std::move(initial);
+  const GridSpec& g = cells_.grid;
+  const auto n = static_cast<std::size_t>(g.cells());
+  markers_ = MarkerSet::fromBodies(scene, g);
+  throwIfStopRequested("the TVD marker lines");
+  markers_.rasterize(g, owner_, normal_);
+  throwIfStopRequested("the TVD marker lines");
+  detail::interfaceNormals(markers_, g, owner_, normal_, normalLength_);
+  ownerNew_.assign(n, -1);
+  normalNew_.assign(n, Vec2{});
+  for (auto* v : {&vxOld_, &vzOld_, &vxMid_, &vzMid_}) v->assign(n, 0.0);
+  for (auto* v : {&target_, &mass_, &band_, &scale_})
+    v->assign(static_cast<std::size_t>(materials), 0.0);
+}
+
+void Ownership::startTargets(const Conserved& U) {
+  measure(U);
+  target_ = mass_;
+}
+
+void Ownership::restore(std::vector<int> owner, std::vector<Vec2> normal,
+                        std::vector<double> targets, MarkerSet markers, long changes) {
+  owner_.swap(owner);
+  normal_.swap(normal);
+  target_.swap(targets);
+  markers_ = std::move(markers);
+  changeCount_ = changes;
+}
+
+// Time-centred velocity (mean of the start and end of the step) for the marker path. Raw
+// pointers: the stores through `known` (char) could alias the vectors' own pointers, which the
+// compiler would then reload for every cell.
+void Ownership::centredVelocity(const Conserved& U) {
+  const long cells = cells_.grid.cells();
+  known_.assign(static_cast<std::size_t>(cells), 0);
+  signed char* known = known_.data();
+  double* vx = vxMid_.data();
+  double* vz = vzMid_.data();
+  const double *vx0 = vxOld_.data(), *vz0 = vzOld_.data();
+  const double *rho = U.rho.data(), *mx = U.mx.data(), *mz = U.mz.data();
+  const int* owner = owner_.data();
+#pragma omp parallel for schedule(static) num_threads(threads_) if (cells >= kParallelCells)
+  for (long c = 0; c < cells; ++c) {
+    if (owner[c] < 0 || !(rho[c] > 0.0)) {
+      vx[c] = vz[c] = 0.0;
+      continue;
+    }
+    vx[c] = 0.5 * (vx0[c] + mx[c] / rho[c]);
+    vz[c] = 0.5 * (vz0[c] + mz[c] / rho[c]);
+    known[c] = 1;
+  }
+}
 
 // Vacuum cells near material get the mean velocity of their already-known 8 neighbours, in
 // `layers` rings: the bilinear interpolation that moves a marker on a free surface then sees
 // the material's velocity on both sides instead of the zero velocity of empty cells.
-void extendIntoVacuum(const GridSpec& g, std::vector<double>& vx, std::vector<double>& vz,
-                      std::vector<signed char>& known, std::vector<long>& fresh, int layers) {
-  const int nx = g.nx, nz = g.nz;
+void Ownership::extendIntoVacuum(int layers) {
+  const int nx = cells_.grid.nx, nz = cells_.grid.nz;
+  const signed char* known = known_.data();
+  double* vx = vxMid_.data();
+  double* vz = vzMid_.data();
   for (int layer = 0; layer < layers; ++layer) {
-    fresh.clear();
+    fresh_.clear();
     for (int k = 0; k < nz; ++k)
       for (int i = 0; i < nx; ++i) {
         const long c = static_cast<long>(k) * nx + i;
-        if (known[static_cast<std::size_t>(c)]) continue;
+        if (known[c]) continue;
         double sx = 0.0, sz = 0.0;
         int count = 0;
         for (int dk = -1; dk <= 1; ++dk)
           for (int di = -1; di <= 1; ++di) {
             const int ii = i + di, kk = k + dk;
             if (ii < 0 || ii >= nx || kk < 0 || kk >= nz) continue;
-            const auto d = static_cast<std::size_t>(static_cast<long>(kk) * nx + ii);
+            const long d = static_cast<long>(kk) * nx + ii;
             if (known[d] != 1) continue;
             sx += vx[d];
             sz += vz[d];
             ++count;
           }
         if (count == 0) continue;
-        vx[static_cast<std::size_t>(c)] = sx / count;
-        vz[static_cast<std::size_t>(c)] = sz / count;
-        fresh.push_back(c);
+        vx[c] = sx / count;
+        vz[c] = sz / count;
+        fresh_.push_back(c);
       }
-    for (long c : fresh) known[static_cast<std::size_t>(c)] = 1;  // usable in the next ring
+    for (long c : fresh_) known_[static_cast<std::size_t>(c)] = 1;  // usable in the next ring
   }
 }
 
-}  // namespace
+void Ownership::update(Conserved& U, double dt, Budget& booked) {
+  const GridSpec& g = cells_.grid;
+  const long cells = g.cells();
+  centredVelocity(U);
+  extendIntoVacuum(2);
+  markers_.advect(g, vxMid_.data(), vzMid_.data(), dt);
+  markers_.redistribute(g);
+  markers_.rasterize(g, ownerNew_, normalNew_);
+  detail::interfaceNormals(markers_, g, ownerNew_, normalNew_, normalLength_);
 
-void TvdSolver::updateMarkers(double dt) {
-  const long cells = grid_.cells();
-  const int nx = grid_.nx, nz = grid_.nz;
-  // Time-centred velocity (mean of the start and end of the step) for the marker path.
-  known_.assign(static_cast<std::size_t>(cells), 0);
-  std::vector<signed char>& known = known_;
-#pragma omp parallel for schedule(static) \
-    num_threads(threads_) if (grid_.cells() >= kParallelCells)
-  for (long c = 0; c < cells; ++c) {
-    const auto cc = static_cast<std::size_t>(c);
-    if (owner_[cc] < 0 || !(U_.rho[cc] > 0.0)) {
-      vxMid_[cc] = vzMid_[cc] = 0.0;
-      continue;
-    }
-    vxMid_[cc] = 0.5 * (vxOld_[cc] + U_.mx[cc] / U_.rho[cc]);
-    vzMid_[cc] = 0.5 * (vzOld_[cc] + U_.mz[cc] / U_.rho[cc]);
-    known[cc] = 1;
-  }
-  extendIntoVacuum(grid_, vxMid_, vzMid_, known, fresh_, 2);
-  markerSet_.advect(grid_, vxMid_.data(), vzMid_.data(), dt);
-  markerSet_.redistribute(grid_);
-  markerSet_.rasterize(grid_, ownerNew_, normalNew_);
-  detail::interfaceNormals(markerSet_, grid_, ownerNew_, normalNew_, normalLength_);
-
-  // A cell that changes owner takes the mean conserved state of its neighbours that belonged to
-  // the new owner before the step (3 x 3, else 5 x 5, else the object's mean, else the body's
-  // initial state); a cell that becomes vacuum is emptied. New states are computed from the
-  // old arrays first and applied afterwards, so the result does not depend on the order.
-  std::vector<Change>& changes = changes_;
-  changes.clear();
+  // New states are computed from the old arrays first and applied afterwards, so the result
+  // does not depend on the order.
+  changes_.clear();
+  std::vector<ObjectSum> sums;  // filled on first use only: most steps never need it
   long relabelled = 0;
   for (long c = 0; c < cells; ++c) {
     const auto cc = static_cast<std::size_t>(c);
@@ -86,112 +137,134 @@ void TvdSolver::updateMarkers(double dt) {
       ++relabelled;  // same medium: the state is valid for the new owner as it is
       continue;
     }
-    Change ch{c, 0.0, 0.0, 0.0, 0.0};
-    if (to >= 0) {
-      const int i = static_cast<int>(c % nx), k = static_cast<int>(c / nx);
-      int count = 0;
-      // Donors first: the face neighbours of the new owner whose flow enters this cell,
-      // weighted by their velocity towards it; the material that fills the cell comes from
-      // them (at an expanding surface these are the surface cells, not the denser cells
-      // behind them that a plain 3 x 3 mean would also take).
-      double wsum = 0.0;
-      const int di4[4] = {-1, 1, 0, 0}, dk4[4] = {0, 0, -1, 1};
-      for (int q = 0; q < 4; ++q) {
-        const int ii = i + di4[q], kk = k + dk4[q];
-        if (ii < 0 || ii >= nx || kk < 0 || kk >= nz) continue;
-        const auto d = static_cast<std::size_t>(static_cast<long>(kk) * nx + ii);
-        if (owner_[d] != to || !(U_.rho[d] > 0.0)) continue;
-        const double toward = -(di4[q] * U_.mx[d] + dk4[q] * U_.mz[d]) / U_.rho[d];
-        if (!(toward > 0.0)) continue;
-        ch.rho += toward * U_.rho[d];
-        ch.mx += toward * U_.mx[d];
-        ch.mz += toward * U_.mz[d];
-        ch.E += toward * U_.E[d];
-        wsum += toward;
-      }
-      if (wsum > 0.0) {
-        ch.rho /= wsum;
-        ch.mx /= wsum;
-        ch.mz /= wsum;
-        ch.E /= wsum;
-        changes.push_back(ch);
-        continue;
-      }
-      for (int reach = 1; reach <= 2 && count == 0; ++reach)
-        for (int dk = -reach; dk <= reach; ++dk)
-          for (int di = -reach; di <= reach; ++di) {
-            const int ii = i + di, kk = k + dk;
-            if (ii < 0 || ii >= nx || kk < 0 || kk >= nz) continue;
-            const auto d = static_cast<std::size_t>(static_cast<long>(kk) * nx + ii);
-            if (owner_[d] != to || !(U_.rho[d] > 0.0)) continue;
-            ch.rho += U_.rho[d];
-            ch.mx += U_.mx[d];
-            ch.mz += U_.mz[d];
-            ch.E += U_.E[d];
-            ++count;
-          }
-      if (count == 0) {
-        for (long d = 0; d < cells; ++d) {
-          const auto dd = static_cast<std::size_t>(d);
-          if (owner_[dd] != to || !(U_.rho[dd] > 0.0)) continue;
-          ch.rho += U_.rho[dd];
-          ch.mx += U_.mx[dd];
-          ch.mz += U_.mz[dd];
-          ch.E += U_.E[dd];
-          ++count;
-        }
-      }
-      if (count > 0) {
-        ch.rho /= count;
-        ch.mx /= count;
-        ch.mz /= count;
-        ch.E /= count;
-      } else {
-        const BodyState& b = bodyStates_[static_cast<std::size_t>(to)];
-        ch.rho = b.rho;
-        ch.mx = b.rho * b.vx;
-        ch.mz = b.rho * b.vz;
-        ch.E = b.rho * (b.e + 0.5 * (b.vx * b.vx + b.vz * b.vz));
-      }
-    }
-    changes.push_back(ch);
+    changes_.push_back(to >= 0 ? fillFor(c, to, U, sums) : Change{c, 0.0, 0.0, 0.0, 0.0});
   }
-  for (const Change& ch : changes) {
+  for (const Change& ch : changes_) {
     const auto cc = static_cast<std::size_t>(ch.cell);
-    const double v = cellVolume(ch.cell);
-    ledger_.ownerChanges.mass += v * (ch.rho - U_.rho[cc]);
-    ledger_.ownerChanges.momentumX += v * (ch.mx - U_.mx[cc]);
-    ledger_.ownerChanges.momentumZ += v * (ch.mz - U_.mz[cc]);
-    ledger_.ownerChanges.energy += v * (ch.E - U_.E[cc]);
-    U_.rho[cc] = ch.rho;
-    U_.mx[cc] = ch.mx;
-    U_.mz[cc] = ch.mz;
-    U_.E[cc] = ch.E;
+    const double v = cells_(ch.cell);
+    booked.mass += v * (ch.rho - U.rho[cc]);
+    booked.momentumX += v * (ch.mx - U.mx[cc]);
+    booked.momentumZ += v * (ch.mz - U.mz[cc]);
+    booked.energy += v * (ch.E - U.E[cc]);
+    U.rho[cc] = ch.rho;
+    U.mx[cc] = ch.mx;
+    U.mz[cc] = ch.mz;
+    U.E[cc] = ch.E;
   }
-  ownerChangeCount_ += static_cast<long>(changes.size()) + relabelled;
+  changeCount_ += static_cast<long>(changes_.size()) + relabelled;
   owner_.swap(ownerNew_);
   normal_.swap(normalNew_);
-  renormaliseMaterials();
+  renormalise(U, booked);
+}
+
+// A cell taken over by object `to` takes the mean conserved state of its neighbours that
+// belonged to `to` before the step (donors whose flow enters it, else 3 x 3, else 5 x 5, else
+// the object's mean, else the body's initial state).
+Ownership::Change Ownership::fillFor(long c, int to, const Conserved& U,
+                                     std::vector<ObjectSum>& sums) const {
+  const int nx = cells_.grid.nx, nz = cells_.grid.nz;
+  const int i = static_cast<int>(c % nx), k = static_cast<int>(c / nx);
+  Change ch{c, 0.0, 0.0, 0.0, 0.0};
+  // Donors first: the face neighbours of the new owner whose flow enters this cell, weighted by
+  // their velocity towards it; the material that fills the cell comes from them (at an
+  // expanding surface these are the surface cells, not the denser cells behind them that a
+  // plain 3 x 3 mean would also take).
+  double wsum = 0.0;
+  const int di4[4] = {-1, 1, 0, 0}, dk4[4] = {0, 0, -1, 1};
+  for (int q = 0; q < 4; ++q) {
+    const int ii = i + di4[q], kk = k + dk4[q];
+    if (ii < 0 || ii >= nx || kk < 0 || kk >= nz) continue;
+    const auto d = static_cast<std::size_t>(static_cast<long>(kk) * nx + ii);
+    if (owner_[d] != to || !(U.rho[d] > 0.0)) continue;
+    const double toward = -(di4[q] * U.mx[d] + dk4[q] * U.mz[d]) / U.rho[d];
+    if (!(toward > 0.0)) continue;
+    ch.rho += toward * U.rho[d];
+    ch.mx += toward * U.mx[d];
+    ch.mz += toward * U.mz[d];
+    ch.E += toward * U.E[d];
+    wsum += toward;
+  }
+  if (wsum > 0.0) {
+    ch.rho /= wsum;
+    ch.mx /= wsum;
+    ch.mz /= wsum;
+    ch.E /= wsum;
+    return ch;
+  }
+  long count = 0;
+  for (int reach = 1; reach <= 2 && count == 0; ++reach)
+    for (int dk = -reach; dk <= reach; ++dk)
+      for (int di = -reach; di <= reach; ++di) {
+        const int ii = i + di, kk = k + dk;
+        if (ii < 0 || ii >= nx || kk < 0 || kk >= nz) continue;
+        const auto d = static_cast<std::size_t>(static_cast<long>(kk) * nx + ii);
+        if (owner_[d] != to || !(U.rho[d] > 0.0)) continue;
+        ch.rho += U.rho[d];
+        ch.mx += U.mx[d];
+        ch.mz += U.mz[d];
+        ch.E += U.E[d];
+        ++count;
+      }
+  if (count == 0) {  // the object's mean: one pass over the grid per update, not per cell
+    if (sums.empty()) sums = sumObjects(U);
+    const ObjectSum& o = sums[static_cast<std::size_t>(to)];
+    ch.rho = o.rho;
+    ch.mx = o.mx;
+    ch.mz = o.mz;
+    ch.E = o.E;
+    count = o.count;
+  }
+  if (count > 0) {
+    ch.rho /= static_cast<double>(count);
+    ch.mx /= static_cast<double>(count);
+    ch.mz /= static_cast<double>(count);
+    ch.E /= static_cast<double>(count);
+  } else {
+    const ObjectState& b = initial_[static_cast<std::size_t>(to)];
+    ch.rho = b.rho;
+    ch.mx = b.rho * b.vx;
+    ch.mz = b.rho * b.vz;
+    ch.E = b.rho * (b.e + 0.5 * (b.vx * b.vx + b.vz * b.vz));
+  }
+  return ch;
+}
+
+// Sums in cell order, as a scan of the whole grid for one object would add them.
+std::vector<Ownership::ObjectSum> Ownership::sumObjects(const Conserved& U) const {
+  std::vector<ObjectSum> sums(objectMaterial_.size());
+  const long cells = cells_.grid.cells();
+  for (long d = 0; d < cells; ++d) {
+    const auto dd = static_cast<std::size_t>(d);
+    const int o = owner_[dd];
+    if (o < 0 || !(U.rho[dd] > 0.0)) continue;
+    ObjectSum& s = sums[static_cast<std::size_t>(o)];
+    s.rho += U.rho[dd];
+    s.mx += U.mx[dd];
+    s.mz += U.mz[dd];
+    s.E += U.E[dd];
+    ++s.count;
+  }
+  return sums;
 }
 
 // Each material's mass, and its band: half the mass of its cells with a face neighbour of
 // another material or vacuum.
-void TvdSolver::measureMaterials() {
-  std::fill(materialMass_.begin(), materialMass_.end(), 0.0);
-  std::fill(materialBand_.begin(), materialBand_.end(), 0.0);
-  const int nx = grid_.nx, nz = grid_.nz;
+void Ownership::measure(const Conserved& U) {
+  std::fill(mass_.begin(), mass_.end(), 0.0);
+  std::fill(band_.begin(), band_.end(), 0.0);
+  const int nx = cells_.grid.nx, nz = cells_.grid.nz;
   for (int k = 0; k < nz; ++k)
     for (int i = 0; i < nx; ++i) {
       const long c = static_cast<long>(k) * nx + i;
       const int m = cellMaterial(c);
       if (m < 0) continue;
-      const double mc = U_.rho[static_cast<std::size_t>(c)] * cellVolume(c);
-      materialMass_[static_cast<std::size_t>(m)] += mc;
+      const double mc = U.rho[static_cast<std::size_t>(c)] * cells_(c);
+      mass_[static_cast<std::size_t>(m)] += mc;
       const bool surface = (i > 0 && cellMaterial(c - 1) != m) ||
                            (i + 1 < nx && cellMaterial(c + 1) != m) ||
                            (k > 0 && cellMaterial(c - nx) != m) ||
                            (k + 1 < nz && cellMaterial(c + nx) != m);
-      if (surface) materialBand_[static_cast<std::size_t>(m)] += 0.5 * mc;
+      if (surface) band_[static_cast<std::size_t>(m)] += 0.5 * mc;
     }
 }
 
@@ -206,42 +279,42 @@ void TvdSolver::measureMaterials() {
 // correcting it would turn it into a density error, and a body in uniform motion would no
 // longer keep its state exactly. What exceeds that band is drift: the material is scaled, as a
 // whole, back to the band's edge, with one factor for density, momentum and energy, so
-// velocities and specific energies are untouched. The scaled amounts are booked under owner
-// changes.
-void TvdSolver::renormaliseMaterials() {
-  const std::size_t nm = materialTarget_.size();
-  measureMaterials();
+// velocities and specific energies are untouched. The scaled amounts are booked with the
+// owner changes.
+void Ownership::renormalise(Conserved& U, Budget& booked) {
+  const std::size_t nm = target_.size();
+  measure(U);
   bool any = false;
   for (std::size_t m = 0; m < nm; ++m) {
-    const double mass = materialMass_[m], target = materialTarget_[m];
-    const double drift = mass - target, band = materialBand_[m];
+    const double mass = mass_[m], target = target_[m];
+    const double drift = mass - target, band = band_[m];
     double f = 1.0;
     if (mass > 0.0 && target > 0.0 && std::abs(drift) > band)
       f = (target + std::copysign(band, drift)) / mass;
-    materialMass_[m] = f;  // reused: scale factor per material
+    scale_[m] = f;
     any = any || f != 1.0;
   }
   if (!any) return;
   Budget fix;
-  const long cells = grid_.cells();
+  const long cells = cells_.grid.cells();
   for (long c = 0; c < cells; ++c) {
     const int m = cellMaterial(c);
     if (m < 0) continue;
-    const double f = materialMass_[static_cast<std::size_t>(m)];
+    const double f = scale_[static_cast<std::size_t>(m)];
     if (f == 1.0) continue;
     const auto cc = static_cast<std::size_t>(c);
-    const double v = cellVolume(c);
-    fix.mass += (f - 1.0) * U_.rho[cc] * v;
-    fix.momentumX += (f - 1.0) * U_.mx[cc] * v;
-    fix.momentumZ += (f - 1.0) * U_.mz[cc] * v;
-    fix.energy += (f - 1.0) * U_.E[cc] * v;
-    U_.rho[cc] *= f;
-    U_.mx[cc] *= f;
-    U_.mz[cc] *= f;
-    U_.E[cc] *= f;
+    const double v = cells_(c);
+    fix.mass += (f - 1.0) * U.rho[cc] * v;
+    fix.momentumX += (f - 1.0) * U.mx[cc] * v;
+    fix.momentumZ += (f - 1.0) * U.mz[cc] * v;
+    fix.energy += (f - 1.0) * U.E[cc] * v;
+    U.rho[cc] *= f;
+    U.mx[cc] *= f;
+    U.mz[cc] *= f;
+    U.E[cc] *= f;
   }
-  if (geometry_ == Geometry::Axisymmetric) fix.momentumX = 0.0;
-  ledger_.ownerChanges += fix;
+  if (cells_.rz) fix.momentumX = 0.0;
+  booked += fix;
 }
 
 }  // namespace hvi::tvd

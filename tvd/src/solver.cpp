@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include "eos_line.hpp"
 #include "hvi/cases/effects.hpp"
@@ -41,13 +40,11 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
   for (int t = 0; t < threads_; ++t) work_.push_back(std::make_unique<Workspace>(lineCells));
   lineRecords_.resize(static_cast<std::size_t>(lineCells));
   time_ = scene.tStart;
+  if (markersOn_)
+    ownership_.setUp(scene, cellVolumes_, objectMaterial_, bodyStates_,
+                     static_cast<int>(materials_.size()), threads_);
   initialiseState(scene);
-  if (markersOn_) {
-    materialMass_.assign(materials_.size(), 0.0);
-    materialBand_.assign(materials_.size(), 0.0);
-    measureMaterials();
-    materialTarget_ = materialMass_;
-  }
+  if (markersOn_) ownership_.startTargets(U_);
 }
 
 void TvdSolver::setUpGrid(const cases::Scene& scene) {
@@ -89,6 +86,7 @@ void TvdSolver::setUpGrid(const cases::Scene& scene) {
   for (int i = 0; i <= grid_.nx; ++i) faceX_[static_cast<std::size_t>(i)] = grid_.x0 + i * grid_.dx;
   for (int i = 0; i < grid_.nx; ++i)
     cellX_[static_cast<std::size_t>(i)] = grid_.x0 + (i + 0.5) * grid_.dx;
+  cellVolumes_ = {grid_, geometry_ == Geometry::Axisymmetric, cellX_};
 }
 
 void TvdSolver::setUpMaterials(const cases::Scene& scene) {
@@ -124,19 +122,15 @@ void TvdSolver::setUpMaterials(const cases::Scene& scene) {
   }
 }
 
-double TvdSolver::cellVolume(long cell) const {
-  const double a = grid_.dx * grid_.dz;
-  if (geometry_ != Geometry::Axisymmetric) return a;
-  return 2.0 * std::numbers::pi * cellX_[static_cast<std::size_t>(cell % grid_.nx)] * a;
-}
-
 // Largest signal speed max(|u|, |w|) + c over the material cells; also the check that every
 // cell is physical, and (for the markers) the velocity at the start of the step.
-double TvdSolver::signalSpeedPass(bool keepVelocity, long* worstCell) const {
+double TvdSolver::signalSpeedPass(double* vx, double* vz, long* worstCell) const {
   const long cells = grid_.cells();
   double smax = 0.0;
   long worst = -1, bad = -1;
   const int nMat = static_cast<int>(materials_.size());
+  const int* owner = markersOn_ ? ownership_.owner().data() : nullptr;
+  const int* material = objectMaterial_.data();
   for (int id = 0; id < nMat; ++id) {
     if (!markersOn_ && id != singleMaterial_) continue;
     std::visit(
@@ -147,10 +141,7 @@ double TvdSolver::signalSpeedPass(bool keepVelocity, long* worstCell) const {
             long wLocal = -1, bLocal = -1;
 #pragma omp for schedule(static)
             for (long c = 0; c < cells; ++c) {
-              if (markersOn_) {
-                const int o = owner_[static_cast<std::size_t>(c)];
-                if (o < 0 || objectMaterial_[static_cast<std::size_t>(o)] != id) continue;
-              }
+              if (owner != nullptr && (owner[c] < 0 || material[owner[c]] != id)) continue;
               const double r = U_.rho[static_cast<std::size_t>(c)];
               if (!(r > 0.0)) {
                 if (bLocal < 0) bLocal = c;
@@ -168,9 +159,9 @@ double TvdSolver::signalSpeedPass(bool keepVelocity, long* worstCell) const {
                 sLocal = v;
                 wLocal = c;
               }
-              if (keepVelocity) {
-                vxOld_[static_cast<std::size_t>(c)] = s.u;
-                vzOld_[static_cast<std::size_t>(c)] = s.w;
+              if (vx != nullptr) {
+                vx[c] = s.u;
+                vz[c] = s.w;
               }
             }
 #pragma omp critical(hvi_tvd_signal)
@@ -197,14 +188,16 @@ double TvdSolver::signalSpeedPass(bool keepVelocity, long* worstCell) const {
 }
 
 double TvdSolver::stableTimeStep() const {
-  const double s = signalSpeedPass(false, nullptr);
+  const double s = signalSpeedPass(nullptr, nullptr, nullptr);
   return s > 0.0 ? params_.cfl * grid_.dx / s : std::numeric_limits<double>::infinity();
 }
 
 double TvdSolver::advance(double tStop) {
   if (!(tStop > time_)) return 0.0;
   long worst = -1;
-  const double smax = signalSpeedPass(markersOn_, &worst);
+  const double smax =
+      markersOn_ ? signalSpeedPass(ownership_.startVelocityX(), ownership_.startVelocityZ(), &worst)
+                 : signalSpeedPass(nullptr, nullptr, &worst);
   double dt = smax > 0.0 ? params_.cfl * grid_.dx / smax : tStop - time_;
   if (dt0_ == 0.0) dt0_ = dt;
   if (!(dt >= kDtCollapseFraction * dt0_)) {
@@ -227,7 +220,7 @@ double TvdSolver::advance(double tStop) {
     sweep(1, dt);
     sweep(0, dt);
   }
-  if (markersOn_) updateMarkers(dt);
+  if (markersOn_) ownership_.update(U_, dt, ledger_.ownerChanges);
   time_ = last ? tStop : time_ + dt;
   ++step_;
   return dt;

@@ -112,12 +112,17 @@ void TvdSolver::sweep(int direction, double dt) {
   ctx.entropyFix = options_.entropyFix;
   ctx.contactIterations = options_.contactIterations;
   ctx.dt = dt;
+  ctx.axis = xdir ? 0 : 1;
   const Side lowSide = sideOf(domain_.boundary[xdir ? 0 : 2]);
   const Side highSide = sideOf(domain_.boundary[xdir ? 1 : 3]);
-  // Normal and tangential momentum of this sweep.
-  double* arrays[4] = {U_.rho.data(), xdir ? U_.mx.data() : U_.mz.data(),
-                       xdir ? U_.mz.data() : U_.mx.data(), U_.E.data()};
-  const int* own = markersOn_ ? owner_.data() : nullptr;
+  // The grid arrays in line components (detail::Component): normal and tangential momentum.
+  double* arrays[4];
+  arrays[detail::kRho] = U_.rho.data();
+  arrays[detail::kMn] = xdir ? U_.mx.data() : U_.mz.data();
+  arrays[detail::kMt] = xdir ? U_.mz.data() : U_.mx.data();
+  arrays[detail::kE] = U_.E.data();
+  const int* own = markersOn_ ? ownership_.owner().data() : nullptr;
+  const Vec2* normal = markersOn_ ? ownership_.normal().data() : nullptr;
 
 #pragma omp parallel num_threads(threads_) if (grid_.cells() >= kParallelCells)
   {
@@ -176,7 +181,7 @@ void TvdSolver::sweep(int direction, double dt) {
           const int o = own[c];
           W.owner[j] = o;
           W.mat[j] = o >= 0 ? objectMaterial_[static_cast<std::size_t>(o)] : -1;
-          const Vec2 nv = normal_[static_cast<std::size_t>(c)];
+          const Vec2 nv = normal[c];
           W.nn[j] = sign * (xdir ? nv.x : nv.z);
           W.nt[j] = xdir ? nv.z : nv.x;
         }
@@ -218,25 +223,24 @@ void TvdSolver::sweep(int direction, double dt) {
         const long c = at(a - 2 + j);
         for (int k = 0; k < 4; ++k) arrays[k][c] = W.u0[k][j];
       }
-      auto add = [&](Budget& B, const std::array<double, 4>& v) {
-        B.mass += lineScale * v[0];
-        (xdir ? B.momentumX : B.momentumZ) += lineScale * v[1];
-        (xdir ? B.momentumZ : B.momentumX) += lineScale * v[2];
-        B.energy += lineScale * v[3];
-      };
-      if (own != nullptr) {  // per material, for renormaliseMaterials()
-        if (setup.leftEdge && W.mat[2] >= 0) {
-          rec.edgeMass[0] = lineScale * lb.edgeMass[0];
-          rec.edgeMaterial[0] = W.mat[2];
-        }
-        if (setup.rightEdge && W.mat[n + 1] >= 0) {
-          rec.edgeMass[1] = lineScale * lb.edgeMass[1];
-          rec.edgeMaterial[1] = W.mat[n + 1];
+      rec.interfaces = lb.interfaces.scaled(lineScale);
+      rec.floors = lb.floors.scaled(lineScale);
+      const bool edge[2] = {setup.leftEdge, setup.rightEdge};
+      const bool open[2] = {lowSide == Side::Outflow, highSide == Side::Outflow};
+      const int edgeCell[2] = {2, n + 1};
+      for (int e = 0; e < 2; ++e) {
+        if (!edge[e]) continue;
+        const Budget in = lb.edge[e].scaled(lineScale);
+        if (open[e])
+          rec.outflow += lb.edge[e].scaled(-lineScale);  // what left, as totals() adds it back
+        else
+          rec.boundary += in;  // a wall or the axis: only the pressure's impulse
+        // per material, for the renormalisation targets
+        if (own != nullptr && W.mat[edgeCell[e]] >= 0) {
+          rec.edgeMass[e] = in.mass;
+          rec.edgeMaterial[e] = W.mat[edgeCell[e]];
         }
       }
-      add(rec.boundary, lb.boundary);
-      add(rec.interfaces, lb.interfaces);
-      add(rec.floors, lb.floors);
     }
   }
   const Workspace* failed = nullptr;
@@ -252,9 +256,9 @@ void TvdSolver::sweep(int direction, double dt) {
     ledger_.boundary += rec.boundary;
     ledger_.interfaces += rec.interfaces;
     ledger_.floors += rec.floors;
-    for (int s = 0; s < 2; ++s)
-      if (rec.edgeMaterial[s] >= 0)
-        materialTarget_[static_cast<std::size_t>(rec.edgeMaterial[s])] += rec.edgeMass[s];
+    ledger_.outflow += rec.outflow;
+    for (int e = 0; e < 2; ++e)
+      if (rec.edgeMaterial[e] >= 0) ownership_.addBoundaryMass(rec.edgeMaterial[e], rec.edgeMass[e]);
   }
 }
 

@@ -19,7 +19,7 @@ struct TvdSolver::Workspace {
 };
 
 struct TvdSolver::LineRecord {
-  Budget boundary, interfaces, floors;
+  Budget boundary, interfaces, floors, outflow;
   std::array<double, 2> edgeMass{};  // mass in through the low and high domain edge
   std::array<int, 2> edgeMaterial{-1, -1};
 };

@@ -7,7 +7,7 @@
 
 namespace hvi {
 
-//! Integrals of the state; the driver reports their drift in summary.json.
+//! Integrals of the state; the driver reports their drift in summary.json (docs/output.md).
 struct Totals {
   double mass = 0.0;       //!< g (planar: g per cm of depth; r-z: whole body, 2 pi r included)
   double momentumX = 0.0;  //!< g cm/us (planar x; zero by symmetry in r-z)
@@ -39,7 +39,13 @@ class Solver {
   virtual double advance(double tStop) = 0;
 
   [[nodiscard]] virtual Snapshot snapshot() const = 0;
+  //! What the domain holds plus what has left it through outflow sides (outflow()), so that
+  //! the drift from the initial totals measures the scheme, not the boundary. Walls and axes
+  //! are not outflow: what a wall pushes back is a change of the totals.
   [[nodiscard]] virtual Totals totals() const = 0;
+  //! What has left through outflow sides since the start (mass, momentum, energy carried out;
+  //! negative where more came in). Zero for a solver without outflow sides.
+  [[nodiscard]] virtual Totals outflow() const { return {}; }
 
   //! Exact binary state, so that a restart continues bit for bit.
   virtual void writeCheckpoint(std::ostream& out) const = 0;

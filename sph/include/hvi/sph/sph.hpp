@@ -44,6 +44,7 @@ class SphSolver final : public Solver {
   //! phase (eos::phaseState: 0 solid, 1 partly vaporised, 2 vapour).
   [[nodiscard]] Snapshot snapshot() const override;
   [[nodiscard]] Totals totals() const override { return stepper_->totals(); }
+  [[nodiscard]] Totals outflow() const override { return stepper_->outflow(); }
   void writeCheckpoint(std::ostream& out) const override { stepper_->writeState(out); }
   void readCheckpoint(std::istream& in) override { stepper_->readState(in); }
 

@@ -1,0 +1,104 @@
+//! @file Interface ownership of a marker run: the marker lines, the configuration array
+//! (cell -> object), the index array (object -> material), the interface normals, the owner
+//! update after each step and the per-material mass renormalisation (docs/tvd.md).
+#pragma once
+#include <vector>
+
+#include "hvi/cases/scene.hpp"
+#include "hvi/common/geometry.hpp"
+#include "hvi/common/snapshot.hpp"
+#include "hvi/tvd/markers.hpp"
+#include "hvi/tvd/state.hpp"
+
+namespace hvi::tvd {
+
+//! Cell volumes of a grid: planar dx dz (per cm of depth), r-z 2 pi r dx dz with r the cell
+//! centre. One definition for the solver, the ownership and the totals.
+struct CellVolumes {
+  GridSpec grid;
+  bool rz = false;
+  std::vector<double> cellX;  //!< x (r) of the cell centres
+  [[nodiscard]] double operator()(long cell) const;
+};
+
+//! Which object owns each cell of a marker run, and the bookkeeping that goes with it. The
+//! solver owns the flow state and calls in once per step (update) with it.
+class Ownership {
+ public:
+  //! Initial state of an object: the state a changed cell takes when its new owner has no
+  //! material left near it or anywhere.
+  struct ObjectState {
+    double rho, vx, vz, e;
+  };
+
+  //! Marker lines around the scene's bodies (object = body), rasterised into the owner array;
+  //! `material` is each object's material. Honours a stop request (hvi::throwIfStopRequested).
+  void setUp(const cases::Scene& scene, const CellVolumes& cells, std::vector<int> material,
+             std::vector<ObjectState> initial, int materials, int threads);
+  //! Each material's mass in `U` becomes its target (call once the initial state is set).
+  void startTargets(const Conserved& U);
+
+  //! After a flow step of `dt`: moves the marker lines with the time-centred velocity (the
+  //! start-of-step velocity in startVelocity(), the end-of-step one from `U`), rebuilds the
+  //! owner array, re-initialises the cells whose owner changed and renormalises each
+  //! material's mass; what that adds to the domain is booked in `booked`.
+  void update(Conserved& U, double dt, Budget& booked);
+
+  //! Mass that came in through the domain boundary for material `m` (sweeps), g.
+  void addBoundaryMass(int m, double mass) { target_[static_cast<std::size_t>(m)] += mass; }
+
+  [[nodiscard]] const std::vector<int>& owner() const { return owner_; }
+  [[nodiscard]] const std::vector<Vec2>& normal() const { return normal_; }
+  [[nodiscard]] const std::vector<int>& objectMaterial() const { return objectMaterial_; }
+  [[nodiscard]] const MarkerSet& markers() const { return markers_; }
+  [[nodiscard]] const std::vector<double>& targets() const { return target_; }
+  [[nodiscard]] long changes() const { return changeCount_; }
+  //! Material of a cell, -1 vacuum.
+  [[nodiscard]] int cellMaterial(long cell) const {
+    const int o = owner_[static_cast<std::size_t>(cell)];
+    return o < 0 ? -1 : objectMaterial_[static_cast<std::size_t>(o)];
+  }
+  //! Velocity at the start of the step (cm/us), filled by the solver's time-step pass.
+  double* startVelocityX() { return vxOld_.data(); }
+  double* startVelocityZ() { return vzOld_.data(); }
+
+  //! The state a checkpoint holds (sizes checked by the caller).
+  void restore(std::vector<int> owner, std::vector<Vec2> normal, std::vector<double> targets,
+               MarkerSet markers, long changes);
+
+ private:
+  struct Change {
+    long cell;
+    double rho, mx, mz, E;
+  };
+  struct ObjectSum {  // sums of an object's non-empty cells, for the last-resort fill
+    double rho = 0.0, mx = 0.0, mz = 0.0, E = 0.0;
+    long count = 0;
+  };
+  void centredVelocity(const Conserved& U);
+  void extendIntoVacuum(int layers);
+  [[nodiscard]] Change fillFor(long cell, int to, const Conserved& U,
+                               std::vector<ObjectSum>& sums) const;
+  [[nodiscard]] std::vector<ObjectSum> sumObjects(const Conserved& U) const;
+  void measure(const Conserved& U);  // mass_ and band_ of the current state
+  void renormalise(Conserved& U, Budget& booked);
+
+  CellVolumes cells_;
+  int threads_ = 1;
+  MarkerSet markers_;
+  std::vector<int> owner_, ownerNew_, objectMaterial_;
+  std::vector<Vec2> normal_, normalNew_;
+  std::vector<ObjectState> initial_;
+  long changeCount_ = 0;
+  // Per material: the mass it must have, its initial mass plus what crossed the domain boundary
+  // (docs/tvd.md "Mass renormalisation"); its mass now and its interface band.
+  std::vector<double> target_, mass_, band_, scale_;
+  // Scratch, sized once.
+  std::vector<double> vxOld_, vzOld_, vxMid_, vzMid_;
+  std::vector<Change> changes_;
+  std::vector<signed char> known_;    // cell has a velocity for the markers
+  std::vector<long> fresh_;           // cells given a velocity in this ring
+  std::vector<double> normalLength_;  // marker length per cell
+};
+
+}  // namespace hvi::tvd

@@ -1,0 +1,63 @@
+//! @file The TVD solver's state and budgets: conserved arrays, Budget, Ledger.
+#pragma once
+#include <vector>
+
+namespace hvi::tvd {
+
+//! Conserved state per cell (index k * nx + i) per unit volume: density g/cm^3, momentum
+//! density g/(cm^2 us) along x (or r) and z, total energy density rho (e + |v|^2/2), Mbar.
+struct Conserved {
+  std::vector<double> rho, mx, mz, E;
+};
+
+//! Mass (g), momentum (g cm/us) and energy (g cm^2/us^2) that one mechanism added to the domain
+//! (negative: removed). Planar amounts are per cm of depth; r-z amounts include the 2 pi r.
+//! The line kernel books into the same type, per unit line length (Budget::add).
+struct Budget {
+  double mass = 0.0, momentumX = 0.0, momentumZ = 0.0, energy = 0.0;
+  Budget& operator+=(const Budget& o) {
+    mass += o.mass;
+    momentumX += o.momentumX;
+    momentumZ += o.momentumZ;
+    energy += o.energy;
+    return *this;
+  }
+  //! Adds amounts given in the coordinates of a sweep line along `axis` (0: x, 1: z): normal
+  //! momentum `pn` along the line, tangential `pt` across it.
+  void add(double m, double pn, double pt, double e, int axis) {
+    mass += m;
+    (axis == 0 ? momentumX : momentumZ) += pn;
+    (axis == 0 ? momentumZ : momentumX) += pt;
+    energy += e;
+  }
+  //! `scale` times this budget (line amounts to the solver's units).
+  [[nodiscard]] Budget scaled(double scale) const {
+    return {scale * mass, scale * momentumX, scale * momentumZ, scale * energy};
+  }
+};
+
+//! Every way the totals change. totals() (the domain plus what left through outflow sides)
+//! now minus totals() at the start equals sum() to round-off (momentumX excepted in r-z, where
+//! the radial momentum has the P/r source).
+struct Ledger {
+  Budget boundary;      //!< impulse of the walls and the axis (normal momentum only)
+  Budget interfaces;    //!< two-sided fluxes at object/object and object/vacuum faces (markers)
+  Budget ownerChanges;  //!< cells re-initialised or emptied when the configuration changes
+  Budget floors;        //!< velocity reset below the vacuum density, internal-energy floor
+  //! What left through the outflow sides (outflow positive; inflow negative): part of the
+  //! totals, not a change of them (Solver::outflow).
+  Budget outflow;
+  [[nodiscard]] Budget sum() const {
+    Budget s = boundary;
+    s += interfaces;
+    s += ownerChanges;
+    s += floors;
+    return s;
+  }
+};
+
+//! Grids smaller than this run their loops on one thread: a parallel region's barrier costs
+//! more than the work (and much more when the cores are shared).
+inline constexpr long kParallelCells = 16384;
+
+}  // namespace hvi::tvd
