@@ -3,8 +3,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -164,6 +166,43 @@ TEST_P(RestartTest, StopAndRestartIsBitForBit) {
             readJson(split / "timeseries.json")["snapshots"].size());
 }
 INSTANTIATE_TEST_SUITE_P(BothSolvers, RestartTest, ::testing::Values("sph", "tvd"));
+
+// energy_budget.csv is appended, never rewritten; the checkpoint counts its rows. Rows written
+// after the checkpoint (and half a row, as a killed run leaves) are cut on restart, so the file
+// ends as an uninterrupted run's; a file with fewer rows than counted refuses the restart.
+TEST(Driver, EnergyBudgetIsAppendedAndARestartTrimsIt) {
+  auto readText = [](const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  auto withBudget = [](const fs::path& out) {
+    auto o = smallImpact("tvd", out);
+    o.overrides[1] = R"(effects=["tension_cutoff", "material_interfaces", "energy_budget"])";
+    return o;
+  };
+  const fs::path whole = freshDir("budget_whole"), split = freshDir("budget_split");
+  ASSERT_EQ(app::runScene(withBudget(whole)), app::kOk);
+  auto first = withBudget(split);
+  first.stopAfterSteps = 5;
+  ASSERT_EQ(app::runScene(first), app::kInterrupted);
+  clearStop();
+  const fs::path csv = split / "energy_budget.csv";
+  const std::string atStop = readText(csv);
+  EXPECT_EQ(std::count(atStop.begin(), atStop.end(), '\n'), 6) << "header and 5 rows";
+  std::ofstream(csv, std::ios::app) << "9,9,9,9,9\n1,2,";
+  auto second = withBudget(split);
+  second.restart = true;
+  ASSERT_EQ(app::runScene(second), app::kOk);
+  EXPECT_EQ(readText(csv), readText(whole / "energy_budget.csv"));
+
+  // A budget file shorter than the checkpoint counts: the restart is refused.
+  first.out = freshDir("budget_short");
+  ASSERT_EQ(app::runScene(first), app::kInterrupted);
+  clearStop();
+  std::ofstream(first.out / "energy_budget.csv") << "time_us,kinetic,internal,total,dt_us\n";
+  second.out = first.out;
+  EXPECT_EQ(app::runScene(second), app::kBadInput);
+}
 
 TEST(Driver, RestartRefusesAnotherScene) {
   const fs::path out = freshDir("restart_other");
