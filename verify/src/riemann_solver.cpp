@@ -5,6 +5,7 @@
 #include <ostream>
 #include <variant>
 
+#include "hvi/cases/effects.hpp"
 #include "hvi/common/binary.hpp"
 #include "hvi/common/error.hpp"
 #include "hvi/verify/riemann.hpp"
@@ -24,9 +25,11 @@ class RiemannSolver final : public Solver {
     if (r0 && r1 && r1->xmin < r0->xmin) left_ = 1;
     const auto& l = s.bodies[left_];
     const auto& r = s.bodies[1 - left_];
+    scene_.materials = cases::resolveMaterials(s);  // as every solver runs them
+    const auto& m = scene_.materials;
     exact_ = std::make_unique<ExactRiemann>(
-        s.materials[l.material].eos, RiemannState{l.density, l.velocity.x, l.specificEnergy},
-        s.materials[r.material].eos, RiemannState{r.density, r.velocity.x, r.specificEnergy});
+        m[l.material].eos, RiemannState{l.density, l.velocity.x, l.specificEnergy},
+        m[r.material].eos, RiemannState{r.density, r.velocity.x, r.specificEnergy});
     grid_.nx = s.riemann.cells;
     grid_.nz = 1;
     grid_.x0 = s.domain.xmin;

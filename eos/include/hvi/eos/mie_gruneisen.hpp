@@ -14,7 +14,7 @@ struct MieGruneisen {
   double c0 = 0.394;    //!< cm/us
   double s = 1.49;
   double gamma0 = 2.0;
-  bool tensionCutoff = false;
+  bool tensionCutoff = false;  //!< solvers: the scene's effect (cases::resolveMaterials)
   double soundSpeedFloorFraction = 0.05;
 
   [[nodiscard]] double pressure(double rho, double e) const { return state(rho, e).pressure; }

@@ -19,7 +19,7 @@ struct Tillotson {
   double e0 = 0.05;           //!< cm^2/us^2
   double alpha = 5.0, beta = 5.0;
   double e1 = 0.03, e2 = 0.15;  //!< incipient / full vaporisation energy, cm^2/us^2
-  bool tensionCutoff = true;
+  bool tensionCutoff = true;  //!< solvers: the scene's effect (cases::resolveMaterials)
   double soundSpeedFloorFraction = 0.05;
 
   enum class Region { Compressed, ColdExpanded, Blend, HotExpanded };
