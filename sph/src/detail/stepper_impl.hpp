@@ -43,7 +43,8 @@ struct Stepper::Impl {
     using P = ParticleSystem;
     f(&P::rho, s.a.rho); f(&P::p, s.a.p); f(&P::c, s.a.c);
   }
-  // Every ParticleSystem array is in one of the two lists above.
+  // ParticleSystem has the 14 arrays of the two lists: one added there stops the build here
+  // until it is listed.
   static_assert(sizeof(ParticleSystem) == 14 * sizeof(std::vector<double>));
   // Sizes the step work arrays to the n real particles (never stored: each step rewrites them).
   void resizeWork() {
