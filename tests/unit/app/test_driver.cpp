@@ -16,6 +16,7 @@
 #include "hvi/common/error.hpp"
 #include "hvi/common/stop_flag.hpp"
 #include "hvi/io/output.hpp"
+#include "hvi/test/run_files.hpp"
 
 namespace fs = std::filesystem;
 using namespace hvi;
@@ -23,19 +24,9 @@ using nlohmann::json;
 
 namespace {
 
-fs::path freshDir(const std::string& name) {
-  fs::path d = fs::path(HVI_BINARY_DIR) / "test_out" / "app" / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-fs::path scene(const std::string& name) {
-  return fs::path(HVI_SOURCE_DIR) / "cases" / "scenes" / (name + ".toml");
-}
-json readJson(const fs::path& p) {
-  std::ifstream f(p);
-  return json::parse(f);
-}
+fs::path freshDir(const std::string& name) { return test::freshDir("app", name); }
+using test::readJson;
+using test::scene;
 std::vector<fs::path> snapshots(const fs::path& dir, const std::string& prefix = "snap_") {
   std::vector<fs::path> v;
   for (auto& e : fs::directory_iterator(dir))

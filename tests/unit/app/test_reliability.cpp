@@ -26,6 +26,7 @@
 #include "hvi/common/stop_flag.hpp"
 #include "hvi/io/checkpoint.hpp"
 #include "hvi/io/output.hpp"
+#include "hvi/test/run_files.hpp"
 
 namespace fs = std::filesystem;
 using namespace hvi;
@@ -33,19 +34,9 @@ using nlohmann::json;
 
 namespace {
 
-fs::path freshDir(const std::string& name) {
-  fs::path d = fs::path(HVI_BINARY_DIR) / "test_out" / "app_rel" / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-fs::path scene(const std::string& name) {
-  return fs::path(HVI_SOURCE_DIR) / "cases" / "scenes" / (name + ".toml");
-}
-json readJson(const fs::path& p) {
-  std::ifstream f(p);
-  return json::parse(f);
-}
+fs::path freshDir(const std::string& name) { return test::freshDir("app_rel", name); }
+using test::readJson;
+using test::scene;
 std::string readText(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), {}};
