@@ -224,8 +224,8 @@ class Run {
       if (scene_.geometry != Geometry::Axisymmetric)
         pErr = std::max(pErr, std::abs(t.momentumX - t0_.momentumX - all.momentumX) / p0);
       r_.momentumClosure = worst(r_.momentumClosure, pErr);
-      r_.outflowMass = -L.boundary.mass / m0;
-      r_.energyOutflow = -L.boundary.energy / e0;
+      r_.outflowMass = tv->outflow().mass / m0;  // Ledger::boundary holds only the walls
+      r_.energyOutflow = tv->outflow().energy() / e0;
       r_.massInterfaces = L.interfaces.mass / m0;
       r_.massOwnerChanges = L.ownerChanges.mass / m0;
       r_.massFloors = L.floors.mass / m0;

@@ -31,10 +31,12 @@ struct Options {
 //! - Strang-alternated dimensional splitting (x then z on even steps, z then x on odd), each
 //!   1-D sweep integrated by Heun's two-stage predictor-corrector with Harten-Yee upwind TVD
 //!   fluxes, limiter scene.tvd.limiter, CFL scene.tvd.cfl;
-//! - with the `material_interfaces` effect: marker lines (MarkerSet) around every body, a
-//!   configuration array (cell -> object) and an index array (object -> material), ghost-fluid
-//!   fluxes at interfaces and vacuum (P = 0); without it the scene must have one material and
-//!   vacuum is that material below scene.tvd.vacuumDensity * rho0.
+//! - with the `material_interfaces` effect: interface ownership (Ownership: marker lines
+//!   around every body, a configuration array cell -> object, an index array object ->
+//!   material), ghost-fluid fluxes at interfaces and vacuum (P = 0); without it the scene must
+//!   have one material and vacuum is that material below scene.tvd.vacuumDensity * rho0.
+//! The solver holds the grid, the settings, the conserved state and the ledger, and conducts a
+//! step: the time step, the sweeps (sweep.cpp), then Ownership::update.
 //! Throws hvi::InputError for an empty domain, a non-positive cell size or CFL, a CFL above
 //! 0.5, several materials without `material_interfaces`, or an r-z domain with xmin < 0.
 class TvdSolver final : public Solver {
@@ -63,6 +65,7 @@ class TvdSolver final : public Solver {
   //! physical (rho > 0 in material cells, zero in vacuum cells of a marker run).
   Conserved& conservedForTesting() { return U_; }
   [[nodiscard]] bool markersActive() const { return markersOn_; }
+  [[nodiscard]] const Ownership& ownership() const { return ownership_; }  //!< markers only
   [[nodiscard]] const MarkerSet& markers() const { return ownership_.markers(); }
   //! Configuration array: owning object per cell, -1 vacuum (markers only; empty otherwise).
   [[nodiscard]] const std::vector<int>& owner() const { return ownership_.owner(); }
