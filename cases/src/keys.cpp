@@ -13,8 +13,8 @@ namespace {
 using K = ValueKind;
 
 constexpr std::array<KeyRow<Scene>, 2> kTime{{
-    {.key = "start", .kind = K::Quantity, HVI_KEY_FIELD(Scene, tStart), .dimension = Dimension::Time,
-     .docValue = "time", .docDefault = "`\"0 us\"`"},
+    {.key = "start", .kind = K::Quantity, HVI_KEY_FIELD(Scene, tStart),
+     .dimension = Dimension::Time, .docValue = "time", .docDefault = "`\"0 us\"`"},
     // end > start is checked once both are read (parse_scene.cpp).
     {.key = "end", .kind = K::Quantity, HVI_KEY_FIELD(Scene, tEnd), .dimension = Dimension::Time,
      .docValue = "**required**, time > start", .required = true},

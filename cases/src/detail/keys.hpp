@@ -52,10 +52,10 @@ constexpr T fromValue(double v) {
 
 // The field `member` of S as a row's get and set (a macro: a member pointer's type would differ
 // per field, and the rows must share one type).
-#define HVI_KEY_FIELD(S, member)                                          \
+#define HVI_KEY_FIELD(S, member)                                             \
   .get = [](const S& s) { return ::hvi::cases::detail::toValue(s.member); }, \
-  .set = [](S& s, double v) {                                              \
-    s.member = ::hvi::cases::detail::fromValue<decltype(S::member)>(v);     \
+  .set = [](S& s, double v) {                                                \
+    s.member = ::hvi::cases::detail::fromValue<decltype(S::member)>(v);      \
   }
 
 std::span<const KeyRow<Scene>> timeKeys();  //!< Scene::tStart, tEnd
