@@ -1,9 +1,13 @@
 //! @file What leaves through outflow sides: counted in totals() (as SPH counts the particles
-//! that left), booked once, and the walls' impulse kept apart.
+//! that left), booked once, the walls' impulse kept apart; version-2 checkpoints still read.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
+#include <sstream>
+#include <string>
 
 #include "hvi/test/tvd_scenes.hpp"
 
@@ -52,6 +56,45 @@ void checkBlockLeaves(bool markers) {
     EXPECT_NEAR(t.mass / t0.mass, 1.0, 1e-12);
     EXPECT_NEAR(t.energy() - t0.energy(), L.floors.energy, 1e-11 * t0.energy());
   }
+}
+
+// Checkpoint version 2 had no outflow budget: its boundary budget held the outflow sides and
+// the walls together. Read now, that budget counts as outflow (mass and energy exact: walls
+// carry none) and the state continues as written.
+TEST(TvdOutflow, CheckpointVersion2IsReadWithItsBoundaryAsOutflow) {
+  cases::Scene s = baseScene(-1.0, 1.0, -0.5, 0.5, 0.05);
+  s.domain.boundary[2] = s.domain.boundary[3] = cases::Boundary::Wall;
+  s.materials.push_back(material("aluminium", eos::aluminiumStudy()));
+  s.effects.insert(cases::Effect::TensionCutoff);
+  s.bodies.push_back(body("block", 0, cases::Rect{0.2, 0.9, -0.3, 0.3}, {2.79, {0.6, 0.0}, 0.0}));
+  TvdSolver a(s);
+  runTo(a, 0.6);
+  std::stringstream v3;
+  a.writeCheckpoint(v3);
+  std::string bytes = v3.str();
+  // Layout (docs/tvd.md): magic u64, version u32, 4 x i32, 2 x f64, 2 x i64, then the budgets.
+  constexpr std::size_t kVersionAt = 8, kBudgetsAt = 60, kBudget = 4 * sizeof(double);
+  const std::uint32_t two = 2;
+  std::memcpy(bytes.data() + kVersionAt, &two, sizeof two);
+  double boundary[4], outflow[4];
+  std::memcpy(boundary, bytes.data() + kBudgetsAt, kBudget);
+  std::memcpy(outflow, bytes.data() + kBudgetsAt + 4 * kBudget, kBudget);
+  for (int k = 0; k < 4; ++k) boundary[k] -= outflow[k];  // version 2: inflow positive, walls too
+  std::memcpy(bytes.data() + kBudgetsAt, boundary, kBudget);
+  bytes.erase(kBudgetsAt + 4 * kBudget, kBudget);
+  TvdSolver b(s);
+  std::stringstream v2(bytes);
+  b.readCheckpoint(v2);
+  EXPECT_EQ(b.conserved().rho, a.conserved().rho);
+  EXPECT_EQ(b.ledger().outflow.mass, -boundary[0]);
+  EXPECT_EQ(b.ledger().outflow.energy, -boundary[3]);
+  EXPECT_EQ(b.ledger().boundary.momentumZ, 0.0);
+  EXPECT_GT(b.outflow().mass, 0.0);
+  EXPECT_NEAR(b.totals().mass, a.totals().mass, 1e-15 * a.totals().mass);
+  EXPECT_NEAR(b.totals().energy(), a.totals().energy(), 1e-14 * a.totals().energy());
+  b.advance(1e9);
+  a.advance(1e9);
+  EXPECT_EQ(b.conserved().E, a.conserved().E);
 }
 
 TEST(TvdOutflow, TotalsCountWhatLeft) { checkBlockLeaves(false); }
