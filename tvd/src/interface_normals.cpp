@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "markers_internal.hpp"
+#include "hvi/tvd/marker_geometry.hpp"
 
 namespace hvi::tvd::detail {
 namespace {

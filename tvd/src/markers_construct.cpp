@@ -8,7 +8,7 @@
 
 #include "hvi/common/error.hpp"
 #include "hvi/tvd/markers.hpp"
-#include "markers_internal.hpp"
+#include "hvi/tvd/marker_geometry.hpp"
 
 namespace hvi::tvd {
 namespace {

@@ -12,7 +12,7 @@
 #include "hvi/common/binary.hpp"
 #include "hvi/common/error.hpp"
 #include "hvi/tvd/markers.hpp"
-#include "markers_internal.hpp"
+#include "hvi/tvd/marker_geometry.hpp"
 
 namespace hvi::tvd {
 namespace {

@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "hvi/tvd/markers.hpp"
-#include "markers_internal.hpp"
+#include "hvi/tvd/marker_geometry.hpp"
 
 namespace hvi::tvd {
 namespace {

@@ -27,8 +27,7 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
     : geometry_(scene.geometry),
       domain_(scene.domain),
       params_(scene.tvd),
-      options_(options),
-      materials_(scene.materials) {
+      options_(options) {
   setUpGrid(scene);
   setUpMaterials(scene);
 #ifdef _OPENMP

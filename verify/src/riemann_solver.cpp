@@ -53,21 +53,15 @@ class RiemannSolver final : public Solver {
   }
 
   Snapshot snapshot() const override {
-    Snapshot s;
-    s.time = t_;
-    s.step = step_;
-    s.solver = "riemann";
-    s.geometry = scene_.geometry;
-    s.kind = Snapshot::Kind::Grid;
+    Snapshot s = makeSnapshot("riemann", Snapshot::Kind::Grid, scene_.geometry, t_, step_);
     s.grid = grid_;
-    const long n = grid_.cells();
-    Field rho{"density", "g/cm^3", 1, std::vector<double>(n)};
-    Field p{"pressure", "Mbar", 1, std::vector<double>(n)};
-    Field v{"velocity", "cm/us", 2, std::vector<double>(2 * n)};
-    Field e{"specific_energy", "cm^2/us^2", 1, std::vector<double>(n)};
-    Field mat{"material", "1", 1, std::vector<double>(n)};
-    for (long i = 0; i < n; ++i) {
-      const auto c = cell(i);
+    const auto n = static_cast<std::size_t>(grid_.cells());
+    const Geometry g = scene_.geometry;
+    Field rho = makeField(Quantity::Density, g, n), p = makeField(Quantity::Pressure, g, n);
+    Field v = makeField(Quantity::Velocity, g, n), e = makeField(Quantity::SpecificEnergy, g, n);
+    Field mat = makeField(Quantity::Material, g, n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto c = cell(static_cast<long>(i));
       rho.data[i] = c.rho;
       p.data[i] = c.p;
       v.data[2 * i] = c.u;

@@ -6,7 +6,7 @@
 #include <random>
 
 #include "helpers.hpp"
-#include "markers_internal.hpp"
+#include "hvi/tvd/marker_geometry.hpp"
 
 namespace hvi::tvd {
 namespace {

@@ -1,4 +1,5 @@
-//! @file Kernels shared by the marker-line files: shoelace sums, segment splitting by grid cells.
+//! @file Geometry kernels of the marker lines (shoelace sums, splitting segments at the grid box
+//! and by cells): shared by the marker-line sources and tested directly by tests/unit/tvd_markers.
 #pragma once
 #include <algorithm>
 #include <cmath>
