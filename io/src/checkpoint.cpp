@@ -36,17 +36,15 @@ std::uint64_t getLe(const char* in, int bytes) {
   return v;
 }
 
-//! Forwards to a file's buffer while hashing and counting every byte, so the body streams to
-//! disk without being held in memory.
-class HashingOutBuf : public std::streambuf {
- public:
-  HashingOutBuf(std::streambuf* sink, std::uint64_t hash) : sink_(sink), hash_(hash) {
-    setp(buffer_.data(), buffer_.data() + buffer_.size());
-  }
-  std::uint64_t hash() const { return hash_; }
-  std::uint64_t count() const { return count_; }
-
+//! An output buffer of bufferBytes whose derived class says where a full buffer goes
+//! (flushBuffer, which also resets the put area); a failed flush is a failed write.
+class BufferedOutBuf : public std::streambuf {
  protected:
+  BufferedOutBuf() { resetPutArea(); }
+  virtual bool flushBuffer() = 0;
+  void resetPutArea() { setp(buffer_.data(), buffer_.data() + buffer_.size()); }
+  [[nodiscard]] std::size_t buffered() const { return static_cast<std::size_t>(pptr() - pbase()); }
+
   int_type overflow(int_type ch) override {
     if (!flushBuffer()) return traits_type::eof();
     if (!traits_type::eq_int_type(ch, traits_type::eof())) {
@@ -57,30 +55,39 @@ class HashingOutBuf : public std::streambuf {
   }
   int sync() override { return flushBuffer() ? 0 : -1; }
 
+  std::array<char, bufferBytes> buffer_{};
+};
+
+//! Forwards to a file's buffer while hashing and counting every byte, so the body streams to
+//! disk without being held in memory.
+class HashingOutBuf : public BufferedOutBuf {
+ public:
+  HashingOutBuf(std::streambuf* sink, std::uint64_t hash) : sink_(sink), hash_(hash) {}
+  std::uint64_t hash() const { return hash_; }
+  std::uint64_t count() const { return count_; }
+
  private:
-  bool flushBuffer() {
-    const auto n = static_cast<std::size_t>(pptr() - pbase());
+  bool flushBuffer() override {
+    const std::size_t n = buffered();
     hash_ = fnv1a64(pbase(), n, hash_);
     count_ += n;
     const bool ok = sink_->sputn(pbase(), static_cast<std::streamsize>(n)) ==
                     static_cast<std::streamsize>(n);
-    setp(buffer_.data(), buffer_.data() + buffer_.size());
+    resetPutArea();
     return ok;
   }
   std::streambuf* sink_;
   std::uint64_t hash_;
   std::uint64_t count_ = 0;
-  std::array<char, bufferBytes> buffer_{};
 };
 
 //! Writes to a file descriptor and keeps the errno of the first failed write, so that a failed
 //! checkpoint can say why (disk full, quota, I/O error): a std::ofstream only says "failed".
-class FdOutBuf : public std::streambuf {
+class FdOutBuf : public BufferedOutBuf {
  public:
   explicit FdOutBuf(const fs::path& file)
       : fd_(::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644)) {
     if (fd_ < 0) error_ = errno;
-    setp(buffer_.data(), buffer_.data() + buffer_.size());
   }
   ~FdOutBuf() override {
     if (fd_ >= 0) ::close(fd_);
@@ -98,14 +105,6 @@ class FdOutBuf : public std::streambuf {
   }
 
  protected:
-  int_type overflow(int_type ch) override {
-    if (!flushBuffer()) return traits_type::eof();
-    if (!traits_type::eq_int_type(ch, traits_type::eof())) {
-      *pptr() = traits_type::to_char_type(ch);
-      pbump(1);
-    }
-    return traits_type::not_eof(ch);
-  }
   std::streamsize xsputn(const char* s, std::streamsize n) override {
     if (n >= static_cast<std::streamsize>(buffer_.size())) {
       if (!flushBuffer() || !writeAll(s, static_cast<std::size_t>(n))) return 0;
@@ -113,12 +112,11 @@ class FdOutBuf : public std::streambuf {
     }
     return std::streambuf::xsputn(s, n);
   }
-  int sync() override { return flushBuffer() ? 0 : -1; }
 
  private:
-  bool flushBuffer() {
-    const auto n = static_cast<std::size_t>(pptr() - pbase());
-    setp(buffer_.data(), buffer_.data() + buffer_.size());
+  bool flushBuffer() override {
+    const std::size_t n = buffered();
+    resetPutArea();
     return writeAll(buffer_.data(), n);
   }
   bool writeAll(const char* p, std::size_t n) {
@@ -137,7 +135,6 @@ class FdOutBuf : public std::streambuf {
   }
   int fd_;
   int error_ = 0;
-  std::array<char, bufferBytes> buffer_{};
 };
 
 //! Reads at most `limit` bytes from a file's buffer, so a body reader sees end-of-file where the
