@@ -22,8 +22,35 @@ struct MarkerLine {
   std::vector<Vec2> points;  //!< cm
 };
 
-//! All marker lines of a run. Not safe for concurrent calls on one instance (rasterize and
-//! advect share scratch buffers); each call is threaded internally with OpenMP.
+//! Wetted fraction ("aperture") of every cell face by every object, for the conservative
+//! cut-cell interface mode (Hu, Khoo, Adams, Huang, J. Comput. Phys. 219 (2006) 553): the part
+//! of the face where the object's winding number is nonzero (the nonzero rule, like rasterize's
+//! fractions), in [0, 1]. Each face has two ONE-SIDED limits, so that an object edge lying
+//! exactly on a grid line is seen by the cell on the object's side and not by the other one: a
+//! face on an object's edge is wet on the object's side only; a face inside the object is wet on
+//! both sides. Away from edges on grid lines the two limits are equal.
+struct FaceApertures {
+  int nx = 0, nz = 0, objects = 0;
+  //! x faces (x = x0 + i dx, z in [z0 + k dz, z0 + (k+1) dz], i in [0, nx], k in [0, nz)):
+  //! x[((o * 2 + side) * nz + k) * (nx + 1) + i]; side 0: the limit from x < X (cell i-1's
+  //! side), side 1: from x > X (cell i's side).
+  std::vector<double> x;
+  //! z faces (z = z0 + k dz, x in [x0 + i dx, x0 + (i+1) dx], k in [0, nz], i in [0, nx)):
+  //! z[((o * 2 + side) * (nz + 1) + k) * nx + i]; side 0: from z < Z (cell k-1), 1: from z > Z.
+  std::vector<double> z;
+
+  //! Aperture of x face (i, k) of object o seen from `side` (0: cell i-1, 1: cell i).
+  [[nodiscard]] double ax(int o, int side, int i, int k) const {
+    return x[static_cast<std::size_t>(((static_cast<long>(o) * 2 + side) * nz + k) * (nx + 1) + i)];
+  }
+  //! Aperture of z face (i, k) of object o seen from `side` (0: cell k-1, 1: cell k).
+  [[nodiscard]] double az(int o, int side, int i, int k) const {
+    return z[static_cast<std::size_t>(((static_cast<long>(o) * 2 + side) * (nz + 1) + k) * nx + i)];
+  }
+};
+
+//! All marker lines of a run. Not safe for concurrent calls on one instance (rasterize,
+//! faceApertures and advect share scratch buffers); each call is threaded internally with OpenMP.
 class MarkerSet {
  public:
   MarkerSet() = default;
@@ -72,6 +99,13 @@ class MarkerSet {
   void rasterize(const GridSpec& grid, std::vector<int>& owner, std::vector<Vec2>& normal,
                  std::vector<double>& fraction) const;
 
+  //! Apertures of every cell face by every object (see FaceApertures), exact for the straight
+  //! marker segments up to rounding. Parts of the lines outside the grid count (the winding
+  //! number on the grid's faces is that of the whole line; nothing is clamped). out is resized
+  //! (no allocation once its capacity suffices; scratch is reused likewise). Cost O(markers +
+  //! line crossings + objects * faces); crossings are sorted per grid line.
+  void faceApertures(const GridSpec& grid, FaceApertures& out) const;
+
   double area(int object) const;  //!< enclosed area (shoelace) of the object's lines, cm^2
   //! Volume represented by the object: area (per unit depth, cm^2) in planar geometry,
   //! 2 pi * integral of r dA (cm^3) in r-z.
@@ -106,6 +140,15 @@ class MarkerSet {
   mutable std::vector<double> total_;      // sum of object fractions, per cell
   mutable std::vector<double> cutLength_;  // length of marker segments inside each cell
   std::vector<Vec2> scratchPoints_;
+  //! A crossing of a grid line by a segment (faceApertures): position along the line (cells),
+  //! winding change, and which one-sided limits see it (bit 0: side 0, bit 1: side 1).
+  struct LineCrossing {
+    double at;
+    int winding;
+    int sides;
+  };
+  mutable std::vector<LineCrossing> crossings_;  // per object, bucketed by grid line
+  mutable std::vector<long> crossingStart_;      // bucket offsets, one per grid line + 1
 };
 
 }  // namespace hvi::tvd
