@@ -42,8 +42,9 @@ template <class S>
 void addKeys(std::vector<Row>& rows, const std::string& prefix,
              std::span<const detail::KeyRow<S>> keys) {
   for (const auto& k : keys)
-    rows.push_back({code(prefix + std::string(k.key)), std::string(k.docValue),
-                    std::string(k.docDefault)});
+    if (k.kind != detail::ValueKind::Section)  // a section has its own table
+        rows.push_back({code(prefix + std::string(k.key)), std::string(k.docValue),
+                      std::string(k.docDefault)});
 }
 
 }  // namespace
@@ -63,7 +64,14 @@ std::string keyTableMarkdown(std::initializer_list<std::string_view> sections) {
   std::vector<Row> rows;
   for (std::string_view sec : sections) {
     const std::string prefix = sections.size() > 1 ? std::string(sec) + "." : "";
+    if (sec == "root") addKeys(rows, prefix, detail::rootKeys());
     if (sec == "time") addKeys(rows, prefix, detail::timeKeys());
+    if (sec == "domain") addKeys(rows, prefix, detail::domainKeys());
+    if (sec == "materials") addKeys(rows, prefix, detail::materialKeys());
+    if (sec == "materials.tillotson") addKeys(rows, prefix, detail::tillotsonKeys());
+    if (sec == "materials.ideal_gas") addKeys(rows, prefix, detail::idealGasKeys());
+    if (sec == "materials.mie_gruneisen") addKeys(rows, prefix, detail::mieGruneisenKeys());
+    if (sec == "bodies") addKeys(rows, prefix, detail::bodyKeys());
     if (sec == "sph") addKeys(rows, prefix, detail::sphKeys());
     if (sec == "tvd") addKeys(rows, prefix, detail::tvdKeys());
     if (sec == "riemann") addKeys(rows, prefix, detail::riemannKeys());

@@ -1,5 +1,6 @@
 //! @file The key tables of [time], [sph], [tvd], [riemann] and [output]: type, field, check
-//! and documentation of each key, in the order the parser reads and toToml writes them.
+//! and documentation of each key, in the order the parser reads and toToml writes them (the
+//! top level, [domain], [materials.*] and [[bodies]]: keys_structure.cpp).
 #include "detail/keys.hpp"
 
 #include <array>
@@ -102,7 +103,7 @@ constexpr std::array<KeyRow<RiemannParams>, 2> kRiemann{{
 }};
 
 constexpr std::array<KeyRow<Output>, 4> kOutput{{
-    {.key = "times", .kind = K::TimeList,
+    {.key = "times", .kind = K::Custom,
      .docValue = "array of times, strictly increasing, in (start, end]",
      .docDefault = "`[]` (the driver always writes `end`)"},
     {.key = "hdf5", .kind = K::Flag, HVI_KEY_FIELD(Output, hdf5), .docValue = "boolean",
@@ -130,6 +131,9 @@ constexpr auto kOutputNames = namesOf(kOutput);
 
 }  // namespace
 
+// The top level, [domain], [materials.*] and [[bodies]]: keys_structure.cpp.
+std::span<const std::string_view> structureKeyNames(std::string_view section);
+
 std::span<const KeyRow<Scene>> timeKeys() { return kTime; }
 std::span<const KeyRow<SphParams>> sphKeys() { return kSph; }
 std::span<const KeyRow<TvdParams>> tvdKeys() { return kTvd; }
@@ -142,7 +146,7 @@ std::span<const std::string_view> keyNames(std::string_view section) {
   if (section == "tvd") return kTvdNames;
   if (section == "riemann") return kRiemannNames;
   if (section == "output") return kOutputNames;
-  return {};
+  return structureKeyNames(section);
 }
 
 }  // namespace hvi::cases::detail

@@ -10,7 +10,6 @@
 
 #include "detail/keys.hpp"
 #include "detail/parse.hpp"
-#include "detail/schema.hpp"
 #include "hvi/common/error.hpp"
 
 namespace hvi::cases::detail {
@@ -95,17 +94,17 @@ std::vector<Component> parsePath(const Override& ov, std::string_view key) {
 std::span<const std::string_view> keysOf(Kind k) {
   switch (k) {
     case Kind::Root:
-      return kRootKeys;
+      return keyNames("root");
     case Kind::Time:
       return keyNames("time");
     case Kind::Domain:
-      return kDomainKeys;
+      return keyNames("domain");
     case Kind::Boundaries:
-      return kBoundaryKeys;
+      return keyNames("domain.boundaries");
     case Kind::Material:
-      return kMaterialKeys;
+      return keyNames("materials");
     case Kind::Body:
-      return kBodyKeys;
+      return keyNames("bodies");
     case Kind::Sph:
       return keyNames("sph");
     case Kind::Tvd:

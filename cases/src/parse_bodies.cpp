@@ -3,41 +3,38 @@
 #include <cmath>
 #include <vector>
 
+#include "detail/keys.hpp"
 #include "detail/parse.hpp"
 #include "detail/polygon.hpp"
-#include "detail/schema.hpp"
 #include "hvi/common/error.hpp"
 
 namespace hvi::cases::detail {
 namespace {
 
-std::span<const std::string_view> shapeKeys(std::size_t shape) {
-  switch (shape) {
-    case 0:
-      return kDiskKeys;
-    case 1:
-      return kRectKeys;
-    default:
-      return kPolygonKeys;
-  }
+// The keys of `shape` alone (the table's rows of that variant).
+std::vector<std::string_view> shapeKeys(std::size_t shape) {
+  std::vector<std::string_view> keys;
+  for (const auto& r : bodyKeys())
+    if (r.variant == static_cast<int>(shape)) keys.push_back(r.key);
+  return keys;
 }
 
 // A key of another shape gets a message naming that shape; anything else the nearest key.
 void rejectKeys(const TableReader& b, std::size_t shape) {
-  std::vector<std::string_view> known(kBodyCommonKeys.begin(), kBodyCommonKeys.end());
-  const auto own = shapeKeys(shape);
-  known.insert(known.end(), own.begin(), own.end());
+  std::vector<std::string_view> known;
+  for (const auto& r : bodyKeys())
+    if (r.variant < 0 || r.variant == static_cast<int>(shape)) known.push_back(r.key);
+  const std::string_view name = shapeNames()[shape];
   for (const auto& [k, v] : b.table()) {
     const std::string_view key = k.str();
     if (std::find(known.begin(), known.end(), key) != known.end()) continue;
-    for (std::size_t s = 0; s < kShapeNames.size(); ++s) {
-      const auto other = shapeKeys(s);
-      if (std::find(other.begin(), other.end(), key) != other.end())
+    for (const auto& r : bodyKeys())
+      if (r.key == key && r.variant >= 0)
         b.fail(key,
-               "belongs to shape = \"" + std::string(kShapeNames[s]) + "\", not \"" +
-                   std::string(kShapeNames[shape]) + "\"",
-               "for a " + std::string(kShapeNames[shape]) + ": " + join(own));
-    }
+               "belongs to shape = \"" +
+                   std::string(shapeNames()[static_cast<std::size_t>(r.variant)]) + "\", not \"" +
+                   std::string(name) + "\"",
+               "for a " + std::string(name) + ": " + join(shapeKeys(shape)));
   }
   b.rejectUnknown(known);
 }
@@ -145,7 +142,7 @@ void parseBodies(const TableReader& root, Scene& scene, Sources& sources) {
       fail(root.ctx(), arr.get(i), path,
            "expected a table, got " + std::string(typeName(*arr.get(i))), "[[bodies]] tables");
     const TableReader b(root.ctx(), *t, path);
-    const std::size_t shape = b.choice("shape", kShapeNames);
+    const std::size_t shape = b.choice("shape", shapeNames());
     rejectKeys(b, shape);
 
     Body body;
@@ -178,8 +175,8 @@ void parseBodies(const TableReader& root, Scene& scene, Sources& sources) {
              "radial_velocity = speed with radial_centre = [x, z]");
     }
     const eos::Eos& eos = scene.materials[static_cast<std::size_t>(body.material)].eos;
-    body.density = b.quantity("density", Dimension::Density, eos::referenceDensity(eos));
-    b.check(body.density > 0.0, "density", "must be > 0", "a density > 0");
+    body.density = eos::referenceDensity(eos);
+    readKeys(b, bodyKeys(), body);  // density: the table's one non-Custom row
     body.specificEnergy = initialEnergy(b, eos, body.density);
     scene.bodies.push_back(std::move(body));
     sources.bodies.push_back(t);

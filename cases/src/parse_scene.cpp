@@ -10,7 +10,6 @@
 
 #include "detail/keys.hpp"
 #include "detail/parse.hpp"
-#include "detail/schema.hpp"
 #include "hvi/cases/load.hpp"
 #include "hvi/cases/names.hpp"
 #include "hvi/common/error.hpp"
@@ -60,7 +59,7 @@ void parseTime(const TableReader& root, Scene& scene) {
 
 void parseDomain(const TableReader& root, Scene& scene) {
   const auto d = root.subTable("domain", true);
-  d->rejectUnknown(kDomainKeys);
+  d->rejectUnknown(keyNames("domain"));
   Domain& dom = scene.domain;
   std::tie(dom.xmin, dom.xmax) =
       readInterval(root.ctx(), d->require("x", "[min, max] such as [\"0 cm\", \"1 cm\"]"),
@@ -77,11 +76,11 @@ void parseDomain(const TableReader& root, Scene& scene) {
                   Boundary::Outflow};
   const auto b = d->subTable("boundaries", false);
   if (!b) return;
-  b->rejectUnknown(kBoundaryKeys);
-  for (std::size_t side = 0; side < 4; ++side) {
-    const std::string_view key = kBoundaryKeys[side];
-    dom.boundary[side] = static_cast<Boundary>(
-        b->choice(key, boundaryNames(), static_cast<std::size_t>(dom.boundary[side])));
+  b->rejectUnknown(keyNames("domain.boundaries"));
+  const auto sides = boundaryKeys();
+  for (std::size_t side = 0; side < sides.size(); ++side) {
+    const std::string_view key = sides[side].key;
+    readKeys(*b, sides.subspan(side, 1), dom);  // each side checked before the next is read
     const bool axis = dom.boundary[side] == Boundary::Axis;
     if (rz && side == 0)
       b->check(axis, key, "in rz geometry the xmin boundary is the symmetry axis", "axis");
@@ -95,7 +94,7 @@ void parseDomain(const TableReader& root, Scene& scene) {
 Scene build(const toml::table& doc, const std::string& file) {
   Context ctx{file, false};
   const TableReader root(ctx, doc, "");
-  root.rejectUnknown(kRootKeys);
+  root.rejectUnknown(keyNames("root"));
   if (root.has("units")) {
     (void)root.choice("units", kUnitSystems);
     ctx.bareNumbersAreInternal = true;
@@ -103,8 +102,7 @@ Scene build(const toml::table& doc, const std::string& file) {
   Scene scene;
   scene.path = file;
   scene.title = root.string("title", "");
-  scene.geometry = static_cast<Geometry>(root.choice("geometry", geometryNames()));
-  scene.solver = static_cast<SolverKind>(root.choice("solver", solverNames()));
+  readKeys(root, rootKeys(), scene);  // geometry, solver
   parseEffects(root, scene);
   parseTime(root, scene);
   parseDomain(root, scene);

@@ -24,12 +24,13 @@ std::string num(double v) {
 std::string pair(double a, double b) { return fmt::format("[{}, {}]", num(a), num(b)); }
 std::string vec(Vec2 v) { return pair(v.x, v.z); }
 
-// One key of a section table as TOML; output.times, the one list, is written by its section.
+// The keys of a section table as TOML, in table order; Custom rows (strings, vectors, shapes,
+// lists) are written by their section's code.
 template <class S>
 void writeKeys(std::ostringstream& o, std::span<const detail::KeyRow<S>> rows, const S& s) {
   using detail::ValueKind;
   for (const auto& r : rows) {
-    if (r.kind == ValueKind::TimeList) continue;
+    if (r.kind == ValueKind::Custom || r.kind == ValueKind::Section) continue;
     const double v = r.get(s);
     o << r.key << " = ";
     switch (r.kind) {
@@ -49,31 +50,18 @@ void writeKeys(std::ostringstream& o, std::span<const detail::KeyRow<S>> rows, c
       case ValueKind::Flag:
         o << (v != 0.0 ? "true" : "false");
         break;
-      case ValueKind::TimeList:
+      case ValueKind::Custom:
+      case ValueKind::Section:
         break;
     }
     o << "\n";
   }
 }
 
-struct EosWriter {
-  std::ostringstream& o;
-  void operator()(const eos::Tillotson& t) const {
-    o << "eos = \"tillotson\"\nrho0 = " << num(t.rho0) << "\na = " << num(t.a)
-      << "\nb = " << num(t.b) << "\nA = " << num(t.A) << "\nB = " << num(t.B)
-      << "\ne0 = " << num(t.e0) << "\nalpha = " << num(t.alpha) << "\nbeta = " << num(t.beta)
-      << "\ne1 = " << num(t.e1) << "\ne2 = " << num(t.e2)
-      << "\nsound_speed_floor = " << num(t.soundSpeedFloorFraction) << "\n";
-  }
-  void operator()(const eos::IdealGas& g) const {
-    o << "eos = \"ideal_gas\"\nrho0 = " << num(g.rho0) << "\ngamma = " << num(g.gamma) << "\n";
-  }
-  void operator()(const eos::MieGruneisen& g) const {
-    o << "eos = \"mie_gruneisen\"\nrho0 = " << num(g.rho0) << "\nc0 = " << num(g.c0)
-      << "\ns = " << num(g.s) << "\ngamma0 = " << num(g.gamma0)
-      << "\nsound_speed_floor = " << num(g.soundSpeedFloorFraction) << "\n";
-  }
-};
+void writeEos(std::ostringstream& o, const eos::Eos& e) {
+  o << "eos = \"" << detail::eosNames()[e.index()] << "\"\n";
+  std::visit([&](const auto& params) { writeKeys(o, detail::eosKeys(params), params); }, e);
+}
 
 struct ShapeWriter {
   std::ostringstream& o;
@@ -105,10 +93,9 @@ std::string toToml(const Scene& s) {
     o << "# Read from " << path << "\n";
   }
   o << "units = \"cm-g-us\"\n"
-    << "title = " << tomlString(s.title) << "\n"
-    << "geometry = \"" << toString(s.geometry) << "\"\n"
-    << "solver = \"" << toString(s.solver) << "\"\n"
-    << "effects = [";
+    << "title = " << tomlString(s.title) << "\n";
+  writeKeys(o, detail::rootKeys(), s);  // geometry, solver
+  o << "effects = [";
   bool first = true;
   for (Effect e : s.effects) {
     o << (first ? "" : ", ") << "\"" << toString(e) << "\"";
@@ -119,13 +106,16 @@ std::string toToml(const Scene& s) {
 
   const Domain& d = s.domain;
   o << "\n[domain]\nx = " << pair(d.xmin, d.xmax) << "\nz = " << pair(d.zmin, d.zmax)
-    << "\nboundaries = { xmin = \"" << toString(d.boundary[0]) << "\", xmax = \""
-    << toString(d.boundary[1]) << "\", zmin = \"" << toString(d.boundary[2]) << "\", zmax = \""
-    << toString(d.boundary[3]) << "\" }\n";
+    << "\nboundaries = {";
+  const auto sides = detail::boundaryKeys();  // an inline table, as the shipped scenes write it
+  for (std::size_t i = 0; i < sides.size(); ++i)
+    o << (i ? ", " : " ") << sides[i].key << " = \""
+      << sides[i].choices()[static_cast<std::size_t>(sides[i].get(d))] << "\"";
+  o << " }\n";
 
   for (const Material& m : s.materials) {
     o << "\n[materials." << detail::pathKey(m.name) << "]\n";
-    std::visit(EosWriter{o}, m.eos);
+    writeEos(o, m.eos);
   }
   for (const Body& b : s.bodies) {
     o << "\n[[bodies]]\nname = " << tomlString(b.name) << "\nmaterial = ";
@@ -138,8 +128,8 @@ std::string toToml(const Scene& s) {
     } else {
       o << "velocity = " << vec(b.velocity) << "\n";
     }
-    o << "density = " << num(b.density)
-      << "\nspecific_energy = " << num(b.specificEnergy) << "\n";
+    writeKeys(o, detail::bodyKeys(), b);  // density
+    o << "specific_energy = " << num(b.specificEnergy) << "\n";
   }
 
   o << "\n[sph]\n";

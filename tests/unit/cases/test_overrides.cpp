@@ -79,6 +79,40 @@ TEST(SceneOverrides, UnknownPathsAreRejectedWithASuggestion) {
   has(m, "bad array index");
 }
 
+// The body keys --set accepts are the parser's (one table, keys_structure.cpp): radial_velocity
+// and radial_centre used to be missing there, so the override was refused as an unknown key.
+TEST(SceneOverrides, RadialVelocityAndCentreOfABody) {
+  const auto rz = test::shippedDir() / "study" / "noh_cylindrical_rz.toml";
+  const Scene s = loadScene(rz, {"bodies[0].radial_velocity=-5 km/s"});
+  ASSERT_TRUE(s.bodies[0].radial);
+  EXPECT_DOUBLE_EQ(s.bodies[0].radialSpeed, -0.5);  // 5 km/s = 0.5 cm/us
+  // The path is accepted; the parser then refuses a centre in rz, naming the override.
+  const std::string m = errorOf(rz, {"bodies[0].radial_centre=[\"0 cm\", \"0 cm\"]"});
+  EXPECT_NE(m.find("bodies[0].radial_centre: in rz geometry the radial field is about the axis"),
+            std::string::npos)
+      << m;
+  const Scene p =
+      loadScene(test::shippedDir() / "sod_x.toml",
+                {"solver=tvd", "bodies[1].radial_velocity=-1 km/s",
+                 "bodies[1].radial_centre=[\"0.75 cm\", \"0.01 cm\"]"});
+  ASSERT_TRUE(p.bodies[1].radial);
+  EXPECT_DOUBLE_EQ(p.bodies[1].radialSpeed, -0.1);
+  EXPECT_EQ(p.bodies[1].radialCentre, (Vec2{0.75, 0.01}));
+  // An unknown body key lists them among the allowed ones.
+  const std::string u = errorOf(rz, {"bodies[0].radial_speed=1 km/s"});
+  EXPECT_NE(u.find("radial_velocity, radial_centre"), std::string::npos) << u;
+}
+
+// A material's keys come from its EOS table (keys_structure.cpp): the message lists them in the
+// table's order, the order toToml writes them in.
+TEST(SceneOverrides, KeyOfAnotherEosListsTheTableOfThisOne) {
+  const std::string m = errorOf(kVariant1, {"materials.aluminium.c0=1"});
+  EXPECT_NE(m.find("materials.aluminium.c0: not a parameter of eos = \"tillotson\"; allowed: "
+                   "preset, eos, rho0, a, b, A, B, e0, alpha, beta, e1, e2, sound_speed_floor"),
+            std::string::npos)
+      << m;
+}
+
 TEST(SceneOverrides, BadValuesPointAtTheOverride) {
   auto has = [](const std::string& msg, const std::string& part) {
     EXPECT_NE(msg.find(part), std::string::npos) << "missing \"" << part << "\" in: " << msg;

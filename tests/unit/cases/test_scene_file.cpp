@@ -113,7 +113,10 @@ TEST(SceneDocs, TablesMatchTheParser) {
   const std::string effects = effectTableMarkdown();
   EXPECT_NE(doc.find(effects), std::string::npos) << "docs/scenes.md lacks:\n" << effects;
   for (const std::string& keys :
-       {keyTableMarkdown({"time"}), keyTableMarkdown({"sph", "tvd", "riemann"}),
+       {keyTableMarkdown({"root"}), keyTableMarkdown({"time"}), keyTableMarkdown({"domain"}),
+        keyTableMarkdown({"materials"}), keyTableMarkdown({"materials.tillotson"}),
+        keyTableMarkdown({"materials.ideal_gas"}), keyTableMarkdown({"materials.mie_gruneisen"}),
+        keyTableMarkdown({"bodies"}), keyTableMarkdown({"sph", "tvd", "riemann"}),
         keyTableMarkdown({"output"})})
     EXPECT_NE(doc.find(keys), std::string::npos) << "docs/scenes.md lacks:\n" << keys;
 }

@@ -10,8 +10,9 @@ namespace hvi::cases {
 
 //! | effect | meaning | sph | tvd | riemann |: effectTable() and supportedEffects().
 std::string effectTableMarkdown();
-//! | key | value | default |: the key tables of `sections` ("time", "sph", "tvd", "riemann",
-//! "output"), keys written section.key when there are several.
+//! | key | value | default |: the key tables of `sections` ("root", "time", "domain",
+//! "materials" (preset, eos), "materials.<eos>" (one EOS's parameters), "bodies", "sph", "tvd",
+//! "riemann", "output"), keys written section.key when there are several.
 std::string keyTableMarkdown(std::initializer_list<std::string_view> sections);
 
 }  // namespace hvi::cases
