@@ -64,7 +64,7 @@ constexpr std::array<KeyRow<SphParams>, 10> kSph{{
      .docValue = "integer in [1, 1e6] (1e6 passes are hours; docs/sph.md)", .docDefault = "10000"},
 }};
 
-constexpr std::array<KeyRow<TvdParams>, 5> kTvd{{
+constexpr std::array<KeyRow<TvdParams>, 6> kTvd{{
     {.key = "cell_size", .kind = K::Quantity, HVI_KEY_FIELD(TvdParams, cellSize),
      .ok = [](double v) { return v > 0.0; }, .problem = "must be > 0", .allowed = "a length > 0",
      .docValue = "length > 0, dx = dz", .docDefault = "`0.015 cm`"},
@@ -84,6 +84,12 @@ constexpr std::array<KeyRow<TvdParams>, 5> kTvd{{
      .ok = [](double v) { return v > 0.0 && v < 1.0; },
      .problem = "must be in (0, 1) (a fraction of rho0)", .allowed = "0 < vacuum_density < 1",
      .docValue = "(0, 1), vacuum below this fraction of rho0", .docDefault = "1e-6"},
+    // docs/tvd.md, "Conservative interfaces": with material_interfaces only.
+    {.key = "interfaces", .kind = K::Choice, HVI_KEY_FIELD(TvdParams, interfaces),
+     .choices = interfaceNames,
+     .docValue = "`\"whole_cell\"` (the study's owners), `\"conservative\"` (cut cells, mass exact "
+                 "per material)",
+     .docDefault = "`\"whole_cell\"`"},
 }};
 
 // Measured on sod_x at 1e6 cells: 170 MB peak memory, 49 MB of HDF5 + VTK per snapshot, 2 s for

@@ -11,6 +11,7 @@ constexpr std::array<std::string_view, 3> kBoundaries{"outflow", "wall", "axis"}
 constexpr std::array<std::string_view, 2> kKernels{"gaussian", "cubic_spline"};
 constexpr std::array<std::string_view, 2> kLattices{"square", "hexagonal"};
 constexpr std::array<std::string_view, 3> kLimiters{"minmod", "van_leer", "superbee"};
+constexpr std::array<std::string_view, 2> kInterfaces{"whole_cell", "conservative"};
 
 template <class E, std::size_t N>
 std::string_view nameOf(const std::array<std::string_view, N>& names, E e) {
@@ -25,11 +26,13 @@ std::span<const std::string_view> boundaryNames() { return kBoundaries; }
 std::span<const std::string_view> kernelNames() { return kKernels; }
 std::span<const std::string_view> latticeNames() { return kLattices; }
 std::span<const std::string_view> limiterNames() { return kLimiters; }
+std::span<const std::string_view> interfaceNames() { return kInterfaces; }
 
 std::string_view toString(SolverKind s) { return nameOf(kSolvers, s); }
 std::string_view toString(Boundary b) { return nameOf(kBoundaries, b); }
 std::string_view toString(Kernel k) { return nameOf(kKernels, k); }
 std::string_view toString(Lattice l) { return nameOf(kLattices, l); }
 std::string_view toString(Limiter l) { return nameOf(kLimiters, l); }
+std::string_view toString(InterfaceMode m) { return nameOf(kInterfaces, m); }
 
 }  // namespace hvi::cases

@@ -13,9 +13,10 @@ namespace hvi::tvd {
 namespace {
 
 constexpr std::uint64_t kMagic = 0x31304456544956ULL;  // "VITVD01" little-endian tag
-// 3: the outflow budget after the ledger (Ledger::outflow); 2 (read too) had none, its
-// boundary budget held the outflow sides and the walls together.
-constexpr std::uint32_t kVersion = 3;
+// 4: an interface-mode flag after the markers flag, and the cut-cell phases after the marker
+// lines; 3 (read too): the outflow budget after the ledger (Ledger::outflow); 2 (read too) had
+// none, its boundary budget held the outflow sides and the walls together.
+constexpr std::uint32_t kVersion = 4;
 
 void putBudget(BinaryWriter& w, const Budget& b) {
   for (double v : {b.mass, b.momentumX, b.momentumZ, b.energy}) w.value(v);
@@ -36,6 +37,7 @@ void TvdSolver::writeCheckpoint(std::ostream& out) const {
   w.value<std::int32_t>(grid_.nz);
   w.value<std::int32_t>(geometry_ == Geometry::Axisymmetric ? 1 : 0);
   w.value<std::int32_t>(markersOn_ ? 1 : 0);
+  w.value<std::int32_t>(cut_ ? 1 : 0);
   w.value(time_);
   w.value(dt0_);
   w.value<std::int64_t>(step_);
@@ -53,6 +55,19 @@ void TvdSolver::writeCheckpoint(std::ostream& out) const {
     w.array(ownership_.targets());
     ownership_.markers().write(out);  // its own record, checked by itself
   }
+  if (cut_) {
+    // The apertures follow from the marker lines; the fractions are kept, since the repair
+    // after a marker step may leave an orphan's fraction off the geometry.
+    w.value<std::int64_t>(orphans_);
+    for (int p = 0; p < phases_.count; ++p) {
+      const Conserved& q = phases_.q[static_cast<std::size_t>(p)];
+      w.array(q.rho);
+      w.array(q.mx);
+      w.array(q.mz);
+      w.array(q.E);
+      w.array(phases_.alpha[static_cast<std::size_t>(p)]);
+    }
+  }
 }
 
 void TvdSolver::readCheckpoint(std::istream& in) {
@@ -60,18 +75,20 @@ void TvdSolver::readCheckpoint(std::istream& in) {
   if (r.value<std::uint64_t>() != kMagic)
     throw InputError("tvd checkpoint: not a TVD solver state (wrong magic number)");
   const auto version = r.value<std::uint32_t>();
-  if (version != kVersion && version != 2)
+  if (version < 2 || version > kVersion)
     throw InputError(fmt::format(
-        "tvd checkpoint: format version {}, this build reads 2 and {}", version, kVersion));
+        "tvd checkpoint: format version {}, this build reads 2 to {}", version, kVersion));
   const auto nx = r.value<std::int32_t>(), nz = r.value<std::int32_t>();
   const auto rz = r.value<std::int32_t>(), markers = r.value<std::int32_t>();
+  const auto cut = version >= 4 ? r.value<std::int32_t>() : 0;
   if (nx != grid_.nx || nz != grid_.nz || (rz == 1) != (geometry_ == Geometry::Axisymmetric) ||
-      (markers == 1) != markersOn_)
+      (markers == 1) != markersOn_ || (cut == 1) != cut_)
     throw InputError(fmt::format(
-        "tvd checkpoint: written for a {} x {} {} grid {} markers; this scene gives {} x {} {} "
-        "{} markers",
-        nx, nz, rz == 1 ? "r-z" : "planar", markers == 1 ? "with" : "without", grid_.nx, grid_.nz,
-        toString(geometry_), markersOn_ ? "with" : "without"));
+        "tvd checkpoint: written for a {} x {} {} grid {} markers ({} interfaces); this scene "
+        "gives {} x {} {} {} markers ({} interfaces)",
+        nx, nz, rz == 1 ? "r-z" : "planar", markers == 1 ? "with" : "without",
+        cut == 1 ? "conservative" : "whole-cell", grid_.nx, grid_.nz, toString(geometry_),
+        markersOn_ ? "with" : "without", cut_ ? "conservative" : "whole-cell"));
   const double t = r.value<double>(), dt0 = r.value<double>();
   const auto step = r.value<std::int64_t>(), changes = r.value<std::int64_t>();
   Ledger ledger;
@@ -100,6 +117,24 @@ void TvdSolver::readCheckpoint(std::istream& in) {
     ms.read(in);
     ownership_.restore(std::move(owner), std::move(normal), std::move(target), std::move(ms),
                        static_cast<long>(changes));
+  }
+  if (cut_) {
+    const auto orphans = r.value<std::int64_t>();
+    Phases ph = phases_;
+    for (int p = 0; p < ph.count; ++p) {
+      Conserved& q = ph.q[static_cast<std::size_t>(p)];
+      r.array(q.rho, n, "phase density");
+      r.array(q.mx, n, "phase momentum x");
+      r.array(q.mz, n, "phase momentum z");
+      r.array(q.E, n, "phase energy");
+      r.array(ph.alpha[static_cast<std::size_t>(p)], n, "phase volume fraction");
+    }
+    ownership_.remeasure();  // the fractions and apertures of the restored lines
+    std::vector<std::vector<double>> saved = ph.alpha;
+    phases_ = std::move(ph);
+    measurePhases();
+    phases_.alpha = std::move(saved);  // as saved (orphans included)
+    orphans_ = static_cast<long>(orphans);
   }
   U_ = std::move(U);
   time_ = t;

@@ -70,6 +70,7 @@ struct SweepContext {
   double entropyFix = 0.1;
   int contactIterations = 2;
   double dt = 0.0;
+  double h = 0.0;  //!< cell size (cut-cell merging compares a cell's volume with its faces)
   int axis = 0;  //!< the lines run along x (0) or z (1): where the budgets book kMn and kMt
 };
 

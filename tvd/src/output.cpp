@@ -33,9 +33,14 @@ Snapshot TvdSolver::snapshot() const {
             } else if (!(U_.rho[cc] >= rhoCut_[static_cast<std::size_t>(id)])) {
               object = -1;  // below the vacuum density: reported as vacuum
             }
-            const double r = U_.rho[cc];
+            // Cut cells: the owning material's own state on its part of the cell.
+            const double a =
+                cut_ ? phases_.alpha[static_cast<std::size_t>(id)][cc] : 1.0;
+            if (!(a >= kPhaseAbsent)) continue;
+            const Conserved& q = cut_ ? phases_.q[static_cast<std::size_t>(id)] : U_;
+            const double r = q.rho[cc] / a;
             if (!(r > 0.0)) continue;
-            const CellState st = detail::cellState(eos, r, U_.mx[cc], U_.mz[cc], U_.E[cc]);
+            const CellState st = detail::cellState(eos, r, q.mx[cc] / a, q.mz[cc] / a, q.E[cc] / a);
             rho.data[cc] = r;
             p.data[cc] = st.p;
             v.data[2 * cc] = st.u;

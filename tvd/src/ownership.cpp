@@ -28,7 +28,10 @@ void Ownership::setUp(const cases::Scene& scene, const CellVolumes& cells,
   const auto n = static_cast<std::size_t>(g.cells());
   markers_ = MarkerSet::fromBodies(scene, g);
   throwIfStopRequested("the TVD marker lines");
-  markers_.rasterize(g, owner_, normal_);
+  if (cutCells_)
+    markers_.rasterize(g, owner_, normal_, fraction_);
+  else
+    markers_.rasterize(g, owner_, normal_);
   throwIfStopRequested("the TVD marker lines");
   detail::interfaceNormals(markers_, g, owner_, normal_, normalLength_);
   ownerNew_.assign(n, -1);
@@ -66,7 +69,7 @@ void Ownership::centredVelocity(const Conserved& U) {
   const int* owner = owner_.data();
 #pragma omp parallel for schedule(static) num_threads(threads_) if (cells >= kParallelCells)
   for (long c = 0; c < cells; ++c) {
-    if (owner[c] < 0 || !(rho[c] > 0.0)) {
+    if ((!cutCells_ && owner[c] < 0) || !(rho[c] > 0.0)) {
       vx[c] = vz[c] = 0.0;
       continue;
     }
@@ -109,6 +112,22 @@ void Ownership::extendIntoVacuum(int layers) {
       }
     for (long c : fresh_) known_[static_cast<std::size_t>(c)] = 1;  // usable in the next ring
   }
+}
+
+void Ownership::move(const Conserved& U, double dt) {
+  const GridSpec& g = cells_.grid;
+  centredVelocity(U);
+  extendIntoVacuum(2);
+  markers_.advect(g, vxMid_.data(), vzMid_.data(), dt);
+  markers_.redistribute(g);
+  remeasure();
+  changeCount_ = 0;
+}
+
+void Ownership::remeasure() {
+  const GridSpec& g = cells_.grid;
+  markers_.rasterize(g, owner_, normal_, fraction_);
+  detail::interfaceNormals(markers_, g, owner_, normal_, normalLength_);
 }
 
 void Ownership::update(Conserved& U, double dt, Budget& booked) {

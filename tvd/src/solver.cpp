@@ -35,15 +35,31 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
 #else
   threads_ = 1;
 #endif
+  cut_ = markersOn_ && (options_.cutCells || params_.interfaces == cases::InterfaceMode::Conservative);
   const int lineCells = std::max(grid_.nx, grid_.nz);
-  for (int t = 0; t < threads_; ++t) work_.push_back(std::make_unique<Workspace>(lineCells));
+  for (int t = 0; t < threads_; ++t) {
+    work_.push_back(std::make_unique<Workspace>(lineCells));
+    if (cut_)
+      work_.back()->cut = std::make_unique<detail::CutLineWork>(
+          lineCells, static_cast<int>(materials_.size()));
+  }
   lineRecords_.resize(static_cast<std::size_t>(lineCells));
   time_ = scene.tStart;
-  if (markersOn_)
+  if (markersOn_) {
+    ownership_.setCutCells(cut_);
     ownership_.setUp(scene, cellVolumes_, objectMaterial_, bodyStates_,
                      static_cast<int>(materials_.size()), threads_);
+  }
+  if (cut_) {
+    initialiseCut(scene);
+    return;
+  }
   initialiseState(scene);
   if (markersOn_) ownership_.startTargets(U_);
+}
+
+void TvdSolver::measurePhases() {
+  phases_.measure(ownership_.markers(), objectMaterial_, ownership_.fractions(), apertures_);
 }
 
 void TvdSolver::setUpGrid(const cases::Scene& scene) {
@@ -187,16 +203,21 @@ double TvdSolver::signalSpeedPass(double* vx, double* vz, long* worstCell) const
 }
 
 double TvdSolver::stableTimeStep() const {
-  const double s = signalSpeedPass(nullptr, nullptr, nullptr);
+  const double s = cut_ ? signalSpeedCut(nullptr, nullptr, nullptr)
+                        : signalSpeedPass(nullptr, nullptr, nullptr);
   return s > 0.0 ? params_.cfl * grid_.dx / s : std::numeric_limits<double>::infinity();
 }
 
 double TvdSolver::advance(double tStop) {
   if (!(tStop > time_)) return 0.0;
   long worst = -1;
-  const double smax =
-      markersOn_ ? signalSpeedPass(ownership_.startVelocityX(), ownership_.startVelocityZ(), &worst)
-                 : signalSpeedPass(nullptr, nullptr, &worst);
+  double smax;
+  if (cut_)
+    smax = signalSpeedCut(ownership_.startVelocityX(), ownership_.startVelocityZ(), &worst);
+  else if (markersOn_)
+    smax = signalSpeedPass(ownership_.startVelocityX(), ownership_.startVelocityZ(), &worst);
+  else
+    smax = signalSpeedPass(nullptr, nullptr, &worst);
   double dt = smax > 0.0 ? params_.cfl * grid_.dx / smax : tStop - time_;
   if (dt0_ == 0.0) dt0_ = dt;
   if (!(dt >= kDtCollapseFraction * dt0_)) {
@@ -212,14 +233,23 @@ double TvdSolver::advance(double tStop) {
     last = true;
   }
   // Strang-alternated splitting: x then z on even steps, z then x on odd steps.
-  if (step_ % 2 == 0) {
+  if (cut_) {
+    sweepCut(step_ % 2 == 0 ? 0 : 1, dt);
+    sweepCut(step_ % 2 == 0 ? 1 : 0, dt);
+    phases_.mixture(U_);
+    ownership_.move(U_, dt);
+    alphaOld_ = phases_.alpha;
+    measurePhases();
+    orphans_ += phases_.repair(cellVolumes_, alphaOld_);
+    phases_.mixture(U_);
+  } else if (step_ % 2 == 0) {
     sweep(0, dt);
     sweep(1, dt);
   } else {
     sweep(1, dt);
     sweep(0, dt);
   }
-  if (markersOn_) ownership_.update(U_, dt, ledger_.ownerChanges);
+  if (markersOn_ && !cut_) ownership_.update(U_, dt, ledger_.ownerChanges);
   time_ = last ? tStop : time_ + dt;
   ++step_;
   return dt;

@@ -1,10 +1,12 @@
 //! @file The per-thread workspace of TvdSolver (sweep buffers) and the per-line ledger record.
 #pragma once
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "hvi/tvd/tvd.hpp"
+#include "cut_line.hpp"
 #include "line_work.hpp"
 
 namespace hvi::tvd {
@@ -12,6 +14,7 @@ namespace hvi::tvd {
 struct TvdSolver::Workspace {
   explicit Workspace(int lineCells) : line(lineCells) {}
   detail::LineWork line;
+  std::unique_ptr<detail::CutLineWork> cut;  // cut-cell mode only
   bool failed = false;
   int failedLine = 0;  // the lowest failed line this thread saw: the report does not depend on
                        // the schedule

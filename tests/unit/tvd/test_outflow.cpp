@@ -69,11 +69,14 @@ TEST(TvdOutflow, CheckpointVersion2IsReadWithItsBoundaryAsOutflow) {
   s.bodies.push_back(body("block", 0, cases::Rect{0.2, 0.9, -0.3, 0.3}, {2.79, {0.6, 0.0}, 0.0}));
   TvdSolver a(s);
   runTo(a, 0.6);
-  std::stringstream v3;
-  a.writeCheckpoint(v3);
-  std::string bytes = v3.str();
-  // Layout (docs/tvd.md): magic u64, version u32, 4 x i32, 2 x f64, 2 x i64, then the budgets.
-  constexpr std::size_t kVersionAt = 8, kBudgetsAt = 60, kBudget = 4 * sizeof(double);
+  std::stringstream v4;
+  a.writeCheckpoint(v4);
+  std::string bytes = v4.str();
+  // Layout (docs/tvd.md): magic u64, version u32, 4 x i32, the interface-mode i32 (version 4),
+  // 2 x f64, 2 x i64, then the budgets; version 2 has no mode flag and no outflow budget.
+  constexpr std::size_t kVersionAt = 8, kModeAt = 28, kBudget = 4 * sizeof(double);
+  bytes.erase(kModeAt, sizeof(std::int32_t));
+  constexpr std::size_t kBudgetsAt = 60;
   const std::uint32_t two = 2;
   std::memcpy(bytes.data() + kVersionAt, &two, sizeof two);
   double boundary[4], outflow[4];

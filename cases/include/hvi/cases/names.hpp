@@ -17,11 +17,13 @@ std::span<const std::string_view> boundaryNames();  //!< outflow, wall, axis
 std::span<const std::string_view> kernelNames();    //!< gaussian, cubic_spline
 std::span<const std::string_view> latticeNames();   //!< square, hexagonal
 std::span<const std::string_view> limiterNames();   //!< minmod, van_leer, superbee
+std::span<const std::string_view> interfaceNames(); //!< whole_cell, conservative
 
 std::string_view toString(SolverKind s);
 std::string_view toString(Boundary b);
 std::string_view toString(Kernel k);
 std::string_view toString(Lattice l);
 std::string_view toString(Limiter l);
+std::string_view toString(InterfaceMode m);
 
 }  // namespace hvi::cases

@@ -112,8 +112,14 @@ struct SphParams {
 };
 
 enum class Limiter { Minmod, VanLeer, Superbee };
+//! How the TVD solver treats material interfaces (docs/tvd.md): the study's whole-cell owners
+//! with ghost-fluid faces, or conservative cut cells (every material its own state on its part
+//! of a cell, mass exact per material).
+enum class InterfaceMode { WholeCell, Conservative };
+
 struct TvdParams {
   double cellSize = 0.015;  //!< dx = dz, cm
+  InterfaceMode interfaces = InterfaceMode::WholeCell;
   Limiter limiter = Limiter::Minmod;
   double cfl = 0.4;
   double markerSpacing = 0.5;  //!< target marker spacing in cells

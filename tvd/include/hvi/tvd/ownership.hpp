@@ -44,6 +44,18 @@ class Ownership {
   //! material's mass; what that adds to the domain is booked in `booked`.
   void update(Conserved& U, double dt, Budget& booked);
 
+  //! Conservative cut-cell mode (docs/tvd.md): the marker lines only give the geometry. The
+  //! rasterisation keeps every object's cell fractions (fractions()), and the markers move with
+  //! the velocity of every cell that holds material, owned or not.
+  void setCutCells(bool on) { cutCells_ = on; }
+  //! The marker step of the cut-cell mode: moves and redistributes the lines, rebuilds the
+  //! owner and normal arrays and the fractions; the flow state is not touched.
+  void move(const Conserved& U, double dt);
+  //! Per object and cell (object * cells + c): the part of the cell the object covers.
+  [[nodiscard]] const std::vector<double>& fractions() const { return fraction_; }
+  //! Rasterises the current lines again (after a restart) into owner, normals and fractions.
+  void remeasure();
+
   //! Mass that came in through the domain boundary for material `m` (sweeps), g.
   void addBoundaryMass(int m, double mass) { target_[static_cast<std::size_t>(m)] += mass; }
 
@@ -99,6 +111,8 @@ class Ownership {
   std::vector<signed char> known_;    // cell has a velocity for the markers
   std::vector<long> fresh_;           // cells given a velocity in this ring
   std::vector<double> normalLength_;  // marker length per cell
+  bool cutCells_ = false;
+  std::vector<double> fraction_;  // cut-cell mode: object fractions per cell
 };
 
 }  // namespace hvi::tvd

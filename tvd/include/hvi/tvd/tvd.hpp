@@ -10,6 +10,7 @@
 #include "hvi/common/solver.hpp"
 #include "hvi/tvd/markers.hpp"
 #include "hvi/tvd/ownership.hpp"
+#include "hvi/tvd/phases.hpp"
 #include "hvi/tvd/state.hpp"
 
 namespace hvi::tvd {
@@ -23,6 +24,8 @@ struct Options {
   double entropyFix = 0.1;    //!< Harten's delta as a fraction of |u| + c at the face
   int contactIterations = 2;  //!< two-shock impedance updates at object/object faces
   int threads = 0;            //!< OpenMP threads for the sweeps; 0: omp_get_max_threads()
+  //! Conservative cut-cell interfaces (docs/tvd.md) even where the scene asks for whole cells.
+  bool cutCells = false;
 };
 
 //! Eulerian TVD solver (the scheme is specified in docs/tvd.md):
@@ -65,6 +68,9 @@ class TvdSolver final : public Solver {
   //! physical (rho > 0 in material cells, zero in vacuum cells of a marker run).
   Conserved& conservedForTesting() { return U_; }
   [[nodiscard]] bool markersActive() const { return markersOn_; }
+  //! Conservative cut-cell interfaces (each phase its own state on its part of the cells).
+  [[nodiscard]] bool cutCells() const { return cut_; }
+  [[nodiscard]] const Phases& phases() const { return phases_; }  //!< cut-cell mode only
   [[nodiscard]] const Ownership& ownership() const { return ownership_; }  //!< markers only
   [[nodiscard]] const MarkerSet& markers() const { return ownership_.markers(); }
   //! Configuration array: owning object per cell, -1 vacuum (markers only; empty otherwise).
@@ -86,6 +92,12 @@ class TvdSolver final : public Solver {
   void setUpMaterials(const cases::Scene& scene);
   void initialiseState(const cases::Scene& scene);
   void sweep(int direction, double dt);
+  void sweepCut(int direction, double dt);
+  [[nodiscard]] double aperture1(int p, int side, int gf, bool xdir, int line) const;
+  [[nodiscard]] double crossInterface(int p, bool xdir, int line, int pos) const;
+  void initialiseCut(const cases::Scene& scene);
+  void measurePhases();  // phases_ geometry from the marker lines (cut-cell mode)
+  double signalSpeedCut(double* vx, double* vz, long* worstCell) const;
   // Largest signal speed over the material cells (and the check that each is physical); with
   // vx/vz given, each material cell's velocity is stored there (the markers' start velocity).
   double signalSpeedPass(double* vx, double* vz, long* worstCell) const;
@@ -120,6 +132,11 @@ class TvdSolver final : public Solver {
   double dt0_ = 0.0;  // first step's dt: the reference of the dt-collapse check
   Ledger ledger_;
   Ownership ownership_;  // markers only
+  bool cut_ = false;     // conservative cut-cell interfaces (markers only)
+  Phases phases_;        // cut-cell mode: per material fractions, apertures and states
+  std::vector<std::vector<double>> alphaOld_;  // cut-cell mode: fractions before the marker step
+  FaceApertures apertures_;                     // cut-cell mode: scratch of measurePhases
+  long orphans_ = 0;                            // cut-cell mode: cells kept off the geometry
 
   // Sweep scratch, one per thread, and the per-line ledger records (summed in line order after
   // the sweep so the totals and the material targets do not depend on the schedule).

@@ -1,0 +1,60 @@
+//! @file State and geometry of the conservative cut-cell interface mode (docs/tvd.md,
+//! "Conservative interfaces"): every material (phase) keeps its own conserved state in every
+//! cell it occupies, on the part of the cell the marker lines give it.
+#pragma once
+#include <vector>
+
+#include "hvi/common/snapshot.hpp"
+#include "hvi/tvd/markers.hpp"
+#include "hvi/tvd/state.hpp"
+
+namespace hvi::tvd {
+
+struct CellVolumes;
+
+//! Below this volume fraction a phase is absent from a cell: the round-off of the exact polygon
+//! coverage (docs/markers.md) is ~1e-13 of a cell, and a sliver of 1e-9 of a cell holds no state
+//! worth a flux. Material stranded in such a cell is handed to a neighbour (Phases::repair).
+inline constexpr double kPhaseAbsent = 1e-9;
+
+//! Per phase p (material index) and cell c: the volume fraction alpha (from the marker lines),
+//! the conserved state per unit CELL volume q = alpha U (U the phase's own state per unit phase
+//! volume), and the one-sided face apertures of the phase (MarkerSet::faceApertures summed over
+//! the phase's objects, capped at 1).
+struct Phases {
+  int count = 0;
+  GridSpec grid;
+  std::vector<Conserved> q;
+  std::vector<std::vector<double>> alpha;
+  //! x faces: ax[p][(side * nz + k) * (nx + 1) + i]; z faces: az[p][(side * (nz + 1) + k) * nx
+  //! + i]; side 0 seen from the lower cell, 1 from the upper cell (FaceApertures).
+  std::vector<std::vector<double>> ax, az;
+
+  [[nodiscard]] double apertureX(int p, int side, int i, int k) const {
+    return ax[static_cast<std::size_t>(p)][static_cast<std::size_t>(
+        (static_cast<long>(side) * grid.nz + k) * (grid.nx + 1) + i)];
+  }
+  [[nodiscard]] double apertureZ(int p, int side, int i, int k) const {
+    return az[static_cast<std::size_t>(p)][static_cast<std::size_t>(
+        (static_cast<long>(side) * (grid.nz + 1) + k) * grid.nx + i)];
+  }
+
+  //! Sizes every array for `phases` materials on `grid`, all empty.
+  void resize(int phases, const GridSpec& grid);
+  //! Volume fractions and apertures from the marker lines; objects of one material are one
+  //! phase (their coverage summed, capped at 1), and where the phases together cover more than a
+  //! cell (marker lines of two bodies overlapping by round-off) each is scaled to fit.
+  //! `fraction` is every object's cell fractions (MarkerSet::rasterize); `apertures` scratch.
+  void measure(const MarkerSet& markers, const std::vector<int>& objectMaterial,
+               const std::vector<double>& fraction, FaceApertures& apertures);
+  //! After the volume fractions change: material left in a cell its phase no longer occupies
+  //! goes to the neighbour of that phase with the largest fraction, and a cell the phase newly
+  //! occupies shares the state of that neighbour (conservative averages of the integrals,
+  //! Hu et al. 2006, section 2.5). `oldAlpha` is the fraction before the change; a phase with
+  //! no neighbour within two rings keeps its old fraction there (an orphan, counted).
+  long repair(const CellVolumes& volumes, const std::vector<std::vector<double>>& oldAlpha);
+  //! Mixture state: the sum of the phases' q.
+  void mixture(Conserved& U) const;
+};
+
+}  // namespace hvi::tvd

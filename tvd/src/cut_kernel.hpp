@@ -1,0 +1,406 @@
+//! @file One 1-D sweep of one grid line in the conservative cut-cell mode (docs/tvd.md,
+//! "Conservative interfaces"): every phase on its own part of the cells, Harten-Yee fluxes
+//! through the faces it wets on both sides, and the interface exchange between phases applied
+//! equally and oppositely, so every phase's mass and the totals are conserved to round-off.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <variant>
+
+#include "cut_line.hpp"
+#include "eos_line.hpp"
+#include "hvi/tvd/contact.hpp"
+#include "hvi/tvd/harten_yee.hpp"
+#include "hvi/tvd/limiter.hpp"
+#include "hvi/tvd/phases.hpp"
+#include "line_kernel.hpp"
+
+namespace hvi::tvd::detail {
+
+//! A phase cell smaller than this part of its largest wetted face is merged with its neighbour
+//! through that face after every stage (Hu et al. 2006, section 2.5: 0.5): its own volume would
+//! otherwise limit the time step.
+inline constexpr double kMergeFraction = 0.5;
+
+template <class Lim, bool Radial>
+class CutLineSolver {
+ public:
+  CutLineSolver(CutLineWork& w, const LineSetup& s, const SweepContext& c, LineBudget& b)
+      : W_(w), L_(s), C_(c), B_(b), n_(s.n), P_(static_cast<int>(w.phase.size())) {}
+
+  //! Advances every phase of the line by dt (Heun); false (and `fail`) if a cell cannot be kept
+  //! physical.
+  bool run(LineFailure& fail) {
+    prepare();
+    for (auto& ph : W_.phase) {
+      fillPhaseGhosts(ph.q0);
+      for (int k = 0; k < 4; ++k)
+        std::copy(ph.q0[k].begin(), ph.q0[k].begin() + n_ + 4, ph.q1[k].begin());
+    }
+    if (!stage(true, fail)) return false;
+    for (auto& ph : W_.phase) {
+      for (int k = 0; k < 4; ++k)
+        std::copy(ph.w[k].begin() + 2, ph.w[k].begin() + n_ + 2, ph.q1[k].begin() + 2);
+      fillPhaseGhosts(ph.q1);
+    }
+    if (!stage(false, fail)) return false;
+    for (int p = 0; p < P_; ++p) {
+      PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
+      for (int k = 0; k < 4; ++k)
+        for (int j = 2; j < n_ + 2; ++j) ph.q0[k][j] = 0.5 * (ph.q0[k][j] + ph.w[k][j]);
+      resetThin(p, ph.q0, 1.0);
+    }
+    return true;
+  }
+
+ private:
+  // Paired and unpaired apertures of every face (fixed during the step).
+  void prepare() {
+    for (auto& ph : W_.phase) {
+      for (int j = 0; j < n_ + 4; ++j) ph.present[j] = ph.alpha[j] >= kPhaseAbsent ? 1 : 0;
+      for (int f = 0; f <= n_ + 2; ++f) {
+        const bool l = ph.present[f] != 0, r = ph.present[f + 1] != 0;
+        ph.ap[f] = l && r ? std::min(ph.gm[f], ph.gp[f]) : 0.0;
+        ph.uL[f] = l ? std::max(ph.gm[f] - ph.ap[f], 0.0) : 0.0;
+        ph.uR[f] = r ? std::max(ph.gp[f] - ph.ap[f], 0.0) : 0.0;
+      }
+    }
+  }
+
+  void fillPhaseGhosts(std::array<std::vector<double>, 4>& q) const {
+    fillGhosts(q, n_, L_.left, L_.right);
+  }
+
+  // In-cell interface area of phase `ph` in cell j along the line (outward of the phase), in
+  // line units: the divergence theorem over the phase's part of the cell, so that a uniform
+  // pressure exerts no net force (planar: the aperture difference; radial: with the hoop term).
+  double interfaceAlong(const PhaseLine& ph, int j) const {
+    const double faces = W_.area[j] * ph.gm[j] - W_.area[j - 1] * ph.gp[j - 1];
+    if constexpr (Radial) return ph.alpha[j] / (W_.invVol[j] * W_.invR[j]) - faces;
+    return -faces;
+  }
+  double interfacePlanar(const PhaseLine& ph, int j) const { return ph.gp[j - 1] - ph.gm[j]; }
+
+  bool stage(bool first, LineFailure& fail) {
+    const int nb = n_ + 4;
+    for (int p = 0; p < P_; ++p) states(p, first);
+    for (int p = 0; p < P_; ++p) {
+      PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
+      for (int f = 0; f <= n_ + 2; ++f) {
+        // A face carries a flux only between two cells that hold some of the phase: a cell the
+        // positivity limiter emptied has no state to average with (its c would be 0).
+        if (!(ph.ap[f] > 0.0) || !(ph.cs[f].rho > 0.0) || !(ph.cs[f + 1].rho > 0.0)) {
+          ph.fe[f] = FaceEigen{};
+          continue;
+        }
+        double dU[4];
+        for (int k = 0; k < 4; ++k) dU[k] = ph.U[k][f + 1] - ph.U[k][f];
+        ph.fe[f] = faceEigen(ph.cs[f], ph.cs[f + 1], dU, ph.sqrtRho[f], ph.sqrtRho[f + 1]);
+      }
+      for (int j = 1; j <= n_ + 2; ++j)
+        for (int l = 0; l < kFields; ++l)
+          ph.g[j][l] = (l == 0 || l == 3) ? Lim::g(ph.fe[j - 1].alpha[l], ph.fe[j].alpha[l])
+                                          : Superbee::g(ph.fe[j - 1].alpha[l], ph.fe[j].alpha[l]);
+      for (int f = 1; f <= n_ + 1; ++f) {
+        if (!(ph.ap[f] > 0.0) || !(ph.cs[f].rho > 0.0) || !(ph.cs[f + 1].rho > 0.0)) {
+          ph.flux[f] = {0.0, 0.0, 0.0, 0.0};
+          continue;
+        }
+        const FaceEigen& fe = ph.fe[f];
+        const double delta = C_.entropyFix * (std::abs(fe.u) + fe.c);
+        hartenYeeFlux(fe, ph.g[f].data(), ph.g[f + 1].data(), ph.F[f].data(), ph.F[f + 1].data(),
+                      delta, ph.flux[f].data());
+      }
+      if constexpr (Radial)
+        for (int f = 1; f <= n_ + 1; ++f)
+          ph.pface[f] = ph.ap[f] > 0.0 && ph.cs[f].rho > 0.0 && ph.cs[f + 1].rho > 0.0
+                            ? contactStar(ph.cs[f], ph.cs[f + 1], 1.0, 0.0, C_.contactIterations).p
+                            : -1.0;  // no pair across: the cell's own pressure (update)
+      wallFaces(ph);
+      for (int k = 0; k < 4; ++k) std::fill(ph.ex[k].begin(), ph.ex[k].begin() + nb, 0.0);
+    }
+    exchange();
+    for (int p = 0; p < P_; ++p) {
+      PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
+      const auto& V = first ? ph.q0 : ph.q1;
+      for (int j = 2; j <= n_ + 1; ++j) update(ph, V, j);
+      merge(ph);
+      if (!positivity(p, V, fail)) return false;
+      ledgerFaces(ph);
+      if (first) resetThin(p, ph.w, 0.5);
+    }
+    return true;
+  }
+
+  // Phase states U = q / alpha and their fluxes on every present cell of the buffer.
+  void states(int p, bool first) {
+    PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
+    const auto& V = first ? ph.q0 : ph.q1;
+    const int nb = n_ + 4;
+    std::visit(
+        [&](const auto& eos) {
+          for (int j = 0; j < nb; ++j) {
+            if (!ph.present[j]) {
+              ph.cs[j] = CellState{};
+              for (int k = 0; k < 4; ++k) ph.U[k][j] = 0.0;
+              continue;
+            }
+            const double inv = 1.0 / ph.alpha[j];
+            for (int k = 0; k < 4; ++k) ph.U[k][j] = V[k][j] * inv;
+            const double r = ph.U[kRho][j];
+            if (!(r > 0.0)) {
+              ph.cs[j] = CellState{};
+              ph.sqrtRho[j] = 0.0;
+              ph.F[j] = {0.0, 0.0, 0.0, 0.0};
+              continue;
+            }
+            ph.cs[j] = cellState(eos, r, ph.U[kMn][j], ph.U[kMt][j], ph.U[kE][j]);
+            ph.sqrtRho[j] = std::sqrt(r);
+            physicalFlux(ph.U[kMn][j], ph.U[kMt][j], ph.U[kE][j], ph.cs[j], ph.F[j].data());
+          }
+        },
+        (*C_.materials)[static_cast<std::size_t>(p)].eos);
+  }
+
+  void wallFaces(PhaseLine& ph) const {
+    auto wall = [&](int f) {
+      ph.flux[f][kRho] = 0.0;
+      ph.flux[f][kMt] = 0.0;
+      ph.flux[f][kE] = 0.0;
+    };
+    if (L_.left == Side::Reflect) wall(1);
+    if (L_.right == Side::Reflect) wall(n_ + 1);
+  }
+
+  // Momentum and energy that pass between phases: (a) where the interface lies on a face (the
+  // phase on one side only, another phase across it), through the face's normal; (b) inside a
+  // cell both phases occupy, along the interface normal (the phases' interface area vectors).
+  // Each is a two-shock contact Riemann problem (contactStar) whose p* and u* act on both sides
+  // with opposite signs; a separating contact (p* = 0) exchanges nothing. No mass crosses.
+  void exchange() {
+    for (int f = 1; f <= n_ + 1; ++f) {
+      for (int p = 0; p < P_; ++p) {
+        PhaseLine& a = W_.phase[static_cast<std::size_t>(p)];
+        if (!(a.uL[f] > 0.0)) continue;
+        double left = a.uL[f];
+        for (int q = 0; q < P_ && left > 0.0; ++q) {
+          if (q == p) continue;
+          PhaseLine& b = W_.phase[static_cast<std::size_t>(q)];
+          if (!(b.uR[f] > 0.0)) continue;
+          const double s = std::min(left, b.uR[f]) * W_.area[f];
+          left -= s / W_.area[f];
+          if (!(a.cs[f].rho > 0.0) || !(b.cs[f + 1].rho > 0.0)) continue;
+          const ContactStar st =
+              contactStar(a.cs[f], b.cs[f + 1], 1.0, 0.0, C_.contactIterations);
+          if (!(st.p > 0.0)) continue;
+          a.ex[kMn][f] -= st.p * s;
+          a.ex[kE][f] -= st.p * st.uL * s;
+          b.ex[kMn][f + 1] += st.p * s;
+          b.ex[kE][f + 1] += st.p * st.uL * s;
+        }
+      }
+    }
+    if (P_ < 2) return;
+    for (int j = 2; j <= n_ + 1; ++j) {
+      // The pair's shared area, component by component: where a's outward area and b's inward
+      // area agree in sign, the smaller of the two. Exact where the two fill the cell (I_b =
+      // -I_a); with vacuum in the cell it never gives a phase more interface than it has, so a
+      // sliver with no area along the line gets no push along it.
+      auto shared = [](double ia, double ib) {
+        const double jb = -ib;
+        if (ia > 0.0 && jb > 0.0) return std::min(ia, jb);
+        if (ia < 0.0 && jb < 0.0) return std::max(ia, jb);
+        return 0.0;
+      };
+      for (int p = 0; p < P_; ++p) {
+        PhaseLine& a = W_.phase[static_cast<std::size_t>(p)];
+        if (!a.present[j] || !(a.cs[j].rho > 0.0)) continue;
+        for (int q = p + 1; q < P_; ++q) {
+          PhaseLine& b = W_.phase[static_cast<std::size_t>(q)];
+          if (!b.present[j] || !(b.cs[j].rho > 0.0)) continue;
+          const double sn = shared(interfacePlanar(a, j), interfacePlanar(b, j));
+          const double st = shared(a.It[j], b.It[j]);
+          const double len = std::sqrt(sn * sn + st * st);
+          if (!(len > 1e-12)) continue;
+          const double nn = sn / len, nt = st / len;
+          const ContactStar cst = contactStar(a.cs[j], b.cs[j], nn, nt, C_.contactIterations);
+          if (!(cst.p > 0.0)) continue;
+          const double s = shared(interfaceAlong(a, j), interfaceAlong(b, j));
+          a.ex[kMn][j] -= cst.p * s;
+          a.ex[kE][j] -= cst.p * cst.uL * nn * s;
+          b.ex[kMn][j] += cst.p * s;
+          b.ex[kE][j] += cst.p * cst.uL * nn * s;
+        }
+      }
+    }
+  }
+
+  void update(PhaseLine& ph, const std::array<std::vector<double>, 4>& V, int j) {
+    if (!ph.present[j]) {
+      for (int k = 0; k < 4; ++k) ph.w[k][j] = 0.0;
+      return;
+    }
+    const double lam = C_.dt * W_.invVol[j];
+    const double aR = W_.area[j] * ph.ap[j], aL = W_.area[j - 1] * ph.ap[j - 1];
+    const double* FR = ph.flux[j].data();
+    const double* FL = ph.flux[j - 1].data();
+    for (int k = 0; k < 4; ++k)
+      ph.w[k][j] = V[k][j] - lam * (aR * FR[k] - aL * FL[k] - ph.ex[k][j]);
+    if constexpr (Radial) {
+      // Hoop source over the phase's part of the cell; a face the phase does not pair across
+      // contributes the cell's own pressure (what its interface area in the closure assumes).
+      const double pl = ph.ap[j - 1] > 0.0 && ph.pface[j - 1] >= 0.0 ? ph.pface[j - 1] : ph.cs[j].p;
+      const double pr = ph.ap[j] > 0.0 && ph.pface[j] >= 0.0 ? ph.pface[j] : ph.cs[j].p;
+      ph.w[kMn][j] += C_.dt * 0.5 * (pl + pr) * ph.alpha[j] * W_.invR[j];
+    }
+  }
+
+  // As the whole-cell kernel: faces of a cell the TVD flux leaves unphysical are recomputed
+  // with the Rusanov flux; what is left of a negative internal energy is floored (booked). Mass
+  // is never removed: a phase cell that stays without positive density stops the run.
+  bool positivity(int p, const std::array<std::vector<double>, 4>& V, LineFailure& fail) {
+    PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
+    bool any = false;
+    for (int j = 2; j <= n_ + 1; ++j) {
+      if (!ph.present[j]) continue;
+      if (!physical(ph.w[kRho][j], ph.w[kMn][j], ph.w[kMt][j], ph.w[kE][j])) {
+        ph.fallback[j - 1] = ph.fallback[j] = 1;
+        any = true;
+      }
+    }
+    if (!any) return true;
+    for (int f = 1; f <= n_ + 1; ++f) {
+      if (!ph.fallback[f] || !(ph.ap[f] > 0.0) || !(ph.cs[f].rho > 0.0) ||
+          !(ph.cs[f + 1].rho > 0.0))
+        continue;
+      const CellState& a = ph.cs[f];
+      const CellState& b = ph.cs[f + 1];
+      double UL[4], UR[4];
+      for (int k = 0; k < 4; ++k) {
+        UL[k] = ph.U[k][f];
+        UR[k] = ph.U[k][f + 1];
+      }
+      const double smax = std::max(std::abs(a.u) + a.c, std::abs(b.u) + b.c);
+      rusanovFlux(UL, UR, ph.F[f].data(), ph.F[f + 1].data(), smax, ph.flux[f].data());
+    }
+    wallFaces(ph);
+    // Every cell again (not only those next to a recomputed face): the merges pooled pairs
+    // of cells, and redoing one of a pair would count its partner's share twice.
+    for (int j = 2; j <= n_ + 1; ++j) update(ph, V, j);
+    std::fill(ph.fallback.begin(), ph.fallback.begin() + n_ + 4, 0);
+    merge(ph);
+    // A cut cell can still lose more than it holds (its faces are large for its volume): the
+    // faces that carry its mass out are scaled down until it keeps none to spare (a
+    // positivity-preserving flux limiter in the sense of Hu, Adams and Shu, J. Comput. Phys.
+    // 242 (2013) 169). A face flux is shared by its two cells, so this stays conservative.
+    for (int pass = 0; pass < 8; ++pass) {
+      bool short_ = false;
+      for (int j = 2; j <= n_ + 1; ++j) {
+        if (!ph.present[j] || !(ph.w[kRho][j] < 0.0)) continue;
+        const double lam = C_.dt * W_.invVol[j];
+        const double outL = lam * W_.area[j - 1] * ph.ap[j - 1] * std::max(-ph.flux[j - 1][kRho], 0.0);
+        const double outR = lam * W_.area[j] * ph.ap[j] * std::max(ph.flux[j][kRho], 0.0);
+        const double out = outL + outR;
+        if (!(out > 0.0)) continue;
+        const double theta = std::max(0.0, 1.0 - (-ph.w[kRho][j]) / out * (1.0 + 1e-12));
+        for (int f : {j - 1, j}) {
+          const bool leaving = f == j ? ph.flux[f][kRho] > 0.0 : ph.flux[f][kRho] < 0.0;
+          if (!leaving) continue;
+          for (int k = 0; k < 4; ++k) ph.flux[f][k] *= theta;
+        }
+        short_ = true;
+      }
+      if (!short_) break;
+      for (int j = 2; j <= n_ + 1; ++j) update(ph, V, j);
+      merge(ph);
+    }
+    for (int j = 2; j <= n_ + 1; ++j) {
+      if (!ph.present[j]) continue;
+      const double r = ph.w[kRho][j], m = ph.w[kMn][j], t = ph.w[kMt][j], E = ph.w[kE][j];
+      if (r >= 0.0 && r < 1e-300 * ph.alpha[j]) {  // emptied to round-off: no state left
+        ph.w[kRho][j] = ph.w[kMn][j] = ph.w[kMt][j] = ph.w[kE][j] = 0.0;
+        continue;
+      }
+      if (!(r > 0.0) || !std::isfinite(E) || !std::isfinite(m) || !std::isfinite(t)) {
+        fail.j = j;
+        fail.rho = r / ph.alpha[j];
+        fail.e = E / r - 0.5 * (m * m + t * t) / (r * r);
+        fail.what = "phase density not positive or state not finite after the positivity fallback";
+        return false;
+      }
+      const double kin = 0.5 * (m * m + t * t) / r;
+      if (E < kin) {
+        B_.floors.energy += 0.5 * (kin - E) / W_.invVol[j];
+        ph.w[kE][j] = kin;
+      }
+    }
+    return true;
+  }
+
+  // Small phase cells share one state with their neighbour through the larger wetted face: the
+  // integrals are pooled and redistributed by phase volume, exactly conservative.
+  void merge(PhaseLine& ph) {
+    for (int j = 2; j <= n_ + 1; ++j) {
+      if (!ph.present[j]) continue;
+      const double vol = ph.alpha[j] / W_.invVol[j];
+      const double fl = W_.area[j - 1] * ph.gp[j - 1], fr = W_.area[j] * ph.gm[j];
+      const double face = std::max(fl, fr) * C_.h;
+      // Also a cell the stage left without positive mass: pooled, it takes its partner's state.
+      if (!(vol < kMergeFraction * face) && ph.w[kRho][j] > 0.0) continue;
+      const double al = W_.area[j - 1] * ph.ap[j - 1], ar = W_.area[j] * ph.ap[j];
+      int t = -1;
+      if (ar > 0.0 && ar >= al && j + 1 <= n_ + 1) t = j + 1;
+      else if (al > 0.0 && j - 1 >= 2) t = j - 1;
+      else if (ar > 0.0 && j + 1 <= n_ + 1) t = j + 1;
+      if (t < 0) continue;
+      const double vj = 1.0 / W_.invVol[j], vt = 1.0 / W_.invVol[t];
+      // Pooling a deficit would only spread it: the positivity limiter treats it first.
+      if (!(ph.w[kRho][j] * vj + ph.w[kRho][t] * vt > 0.0)) continue;
+      const double pv = ph.alpha[j] * vj + ph.alpha[t] * vt;
+      for (int k = 0; k < 4; ++k) {
+        const double total = ph.w[k][j] * vj + ph.w[k][t] * vt;
+        const double u = total / pv;
+        ph.w[k][j] = ph.alpha[j] * u;
+        ph.w[k][t] = ph.alpha[t] * u;
+      }
+    }
+  }
+
+  void ledgerFaces(const PhaseLine& ph) {
+    const double h = 0.5 * C_.dt;
+    if (L_.leftEdge) {
+      const double s = h * W_.area[1] * ph.ap[1];
+      const double* F = ph.flux[1].data();
+      B_.edge[0].add(s * F[kRho], s * F[kMn], s * F[kMt], s * F[kE], C_.axis);
+    }
+    if (L_.rightEdge) {
+      const double s = h * W_.area[n_ + 1] * ph.ap[n_ + 1];
+      const double* F = ph.flux[n_ + 1].data();
+      B_.edge[1].add(-(s * F[kRho]), -(s * F[kMn]), -(s * F[kMt]), -(s * F[kE]), C_.axis);
+    }
+  }
+
+  // Below the vacuum density a phase cell keeps its mass at rest and cold (booked), as in the
+  // whole-cell kernel.
+  void resetThin(int p, std::array<std::vector<double>, 4>& q, double weight) {
+    PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
+    for (int j = 2; j <= n_ + 1; ++j) {
+      if (!ph.present[j]) continue;
+      if (q[kRho][j] >= C_.rhoCut[p] * ph.alpha[j] ||
+          (q[kMn][j] == 0.0 && q[kMt][j] == 0.0 && q[kE][j] == 0.0))
+        continue;
+      const double vol = weight / W_.invVol[j];
+      B_.floors.add(0.0, -(q[kMn][j] * vol), -(q[kMt][j] * vol), -(q[kE][j] * vol), C_.axis);
+      q[kMn][j] = q[kMt][j] = q[kE][j] = 0.0;
+    }
+  }
+
+  CutLineWork& W_;
+  const LineSetup& L_;
+  const SweepContext& C_;
+  LineBudget& B_;
+  const int n_;
+  const int P_;
+};
+
+}  // namespace hvi::tvd::detail

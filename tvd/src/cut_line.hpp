@@ -1,0 +1,42 @@
+//! @file Per-thread buffers of the conservative cut-cell sweeps: every phase of one grid line.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "hvi/tvd/characteristics.hpp"
+#include "line_work.hpp"
+
+namespace hvi::tvd::detail {
+
+//! One phase (material) of a loaded line, buffer layout as LineWork (cells 0..n+3, face f
+//! between cells f and f+1). q is the phase's conserved state per unit CELL volume, in line
+//! components (kRho, kMn, kMt, kE); U = q / alpha its own state per unit phase volume.
+struct PhaseLine {
+  explicit PhaseLine(int capacity);
+  std::array<std::vector<double>, 4> q0, q1, w, ex;  // start, stage input, stage result, exchange
+  std::array<std::vector<double>, 4> U;              // state of the stage input, per phase volume
+  std::vector<double> alpha;                         // volume fraction per cell
+  std::vector<double> gm, gp;  // face apertures seen from the lower / upper cell (one-sided)
+  std::vector<double> ap;      // paired aperture: the phase on both sides of the face
+  std::vector<double> uL, uR;  // unpaired wet part of a face seen from its lower / upper cell
+  std::vector<double> It;      // in-cell interface area across the line (planar form)
+  std::vector<unsigned char> present;
+  std::vector<CellState> cs;
+  std::vector<double> sqrtRho;
+  std::vector<std::array<double, 4>> F, flux;
+  std::vector<FaceEigen> fe;
+  std::vector<std::array<double, kFields>> g;
+  std::vector<unsigned char> fallback;
+  std::vector<double> pface;
+};
+
+//! All phases of one line, plus the line's geometry (as LineWork).
+struct CutLineWork {
+  CutLineWork(int capacity, int phases);
+  int capacity;
+  std::vector<PhaseLine> phase;
+  std::vector<double> area, invVol, invR;
+  std::vector<double> scratch;  // face contact areas left to pair
+};
+
+}  // namespace hvi::tvd::detail

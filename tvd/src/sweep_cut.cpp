@@ -1,0 +1,237 @@
+//! @file Sweep driver of the conservative cut-cell mode: every phase of a grid line into
+//! contiguous buffers, the cut-cell line kernel, OpenMP over lines.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "cut_kernel.hpp"
+#include "hvi/common/error.hpp"
+#include "hvi/tvd/limiter.hpp"
+#include "hvi/tvd/tvd.hpp"
+#include "workspace.hpp"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace hvi::tvd {
+namespace {
+
+using detail::Side;
+using CutFn = bool (*)(detail::CutLineWork&, const detail::LineSetup&,
+                       const detail::SweepContext&, detail::LineBudget&, detail::LineFailure&);
+
+template <class Lim, bool Radial>
+bool runCutLine(detail::CutLineWork& w, const detail::LineSetup& s, const detail::SweepContext& c,
+                detail::LineBudget& b, detail::LineFailure& f) {
+  return detail::CutLineSolver<Lim, Radial>(w, s, c, b).run(f);
+}
+
+template <class Lim>
+CutFn pickCutFor(bool radial) {
+  return radial ? &runCutLine<Lim, true> : &runCutLine<Lim, false>;
+}
+
+CutFn pickCutFunction(cases::Limiter limiter, bool radial) {
+  switch (limiter) {
+    case cases::Limiter::Minmod:
+      return pickCutFor<Minmod>(radial);
+    case cases::Limiter::VanLeer:
+      return pickCutFor<VanLeer>(radial);
+    case cases::Limiter::Superbee:
+      return pickCutFor<Superbee>(radial);
+  }
+  return pickCutFor<Minmod>(radial);
+}
+
+Side sideOf(cases::Boundary b) {
+  return b == cases::Boundary::Outflow ? Side::Outflow : Side::Reflect;
+}
+
+}  // namespace
+
+void TvdSolver::sweepCut(int direction, double dt) {
+  const bool xdir = direction == 0;
+  const int nx = grid_.nx;
+  const int N = xdir ? grid_.nx : grid_.nz;
+  const int lines = xdir ? grid_.nz : grid_.nx;
+  const long step = xdir ? 1 : nx;
+  const bool rz = geometry_ == Geometry::Axisymmetric;
+  const bool radial = xdir && rz;
+  const double h = grid_.dx;
+  const CutFn fn = pickCutFunction(params_.limiter, radial);
+  const int P = phases_.count;
+
+  detail::SweepContext ctx;
+  ctx.materials = &materials_;
+  ctx.rhoCut = rhoCut_.data();
+  ctx.rhoThin = rhoThin_.data();
+  ctx.entropyFix = options_.entropyFix;
+  ctx.contactIterations = options_.contactIterations;
+  ctx.dt = dt;
+  ctx.h = h;
+  ctx.axis = xdir ? 0 : 1;
+  const Side lowSide = sideOf(domain_.boundary[xdir ? 0 : 2]);
+  const Side highSide = sideOf(domain_.boundary[xdir ? 1 : 3]);
+
+#pragma omp parallel num_threads(threads_) if (grid_.cells() >= kParallelCells)
+  {
+#ifdef _OPENMP
+    Workspace& ws = *work_[static_cast<std::size_t>(omp_get_thread_num())];
+#else
+    Workspace& ws = *work_[0];
+#endif
+    detail::CutLineWork& W = *ws.cut;
+#pragma omp for schedule(dynamic, 2)
+    for (int line = 0; line < lines; ++line) {
+      LineRecord& rec = lineRecords_[static_cast<std::size_t>(line)];
+      rec = LineRecord{};
+      if (ws.failed) continue;
+      const long base = xdir ? static_cast<long>(line) * nx : line;
+      auto at = [&](int pos) { return base + pos * step; };
+      auto occupied = [&](int pos) {
+        for (int p = 0; p < P; ++p)
+          if (phases_.alpha[static_cast<std::size_t>(p)][static_cast<std::size_t>(at(pos))] >=
+              kPhaseAbsent)
+            return true;
+        return false;
+      };
+      int a = 0, b = N;
+      while (a < N && !occupied(a)) ++a;
+      if (a == N) continue;
+      while (!occupied(b - 1)) --b;
+      if (a <= 2) a = 0;
+      if (b >= N - 2) b = N;
+      const int n = b - a;
+      detail::LineSetup setup;
+      setup.n = n;
+      setup.left = a == 0 ? lowSide : Side::Loaded;
+      setup.right = b == N ? highSide : Side::Loaded;
+      setup.leftEdge = a == 0;
+      setup.rightEdge = b == N;
+
+      // Aperture of phase p at grid face gf (0..N along the line) seen from `side`; faces
+      // beyond the domain mirror (reflecting side) or copy (outflow) the boundary's faces, and
+      // the boundary face itself is seen from inside on both sides.
+      auto aperture = [&](int p, int side, int gf) {
+        if (gf <= 0) {
+          if (gf < 0 && lowSide == Side::Reflect) return aperture1(p, 1 - side, -gf, xdir, line);
+          return aperture1(p, 1, 0, xdir, line);
+        }
+        if (gf >= N) {
+          if (gf > N && highSide == Side::Reflect)
+            return aperture1(p, 1 - side, 2 * N - gf, xdir, line);
+          return aperture1(p, 0, N, xdir, line);
+        }
+        return aperture1(p, side, gf, xdir, line);
+      };
+      for (int p = 0; p < P; ++p) {
+        detail::PhaseLine& ph = W.phase[static_cast<std::size_t>(p)];
+        const Conserved& Q = phases_.q[static_cast<std::size_t>(p)];
+        const double* arrays[4] = {Q.rho.data(), xdir ? Q.mx.data() : Q.mz.data(),
+                                   xdir ? Q.mz.data() : Q.mx.data(), Q.E.data()};
+        const double* alpha = phases_.alpha[static_cast<std::size_t>(p)].data();
+        for (int j = 0; j < n + 4; ++j) {
+          int pos = a - 2 + j;
+          bool ghost = false;
+          if (pos < 0) {
+            pos = lowSide == Side::Reflect ? -1 - pos : 0;
+            ghost = true;
+          } else if (pos >= N) {
+            pos = highSide == Side::Reflect ? 2 * N - 1 - pos : N - 1;
+            ghost = true;
+          }
+          const long c = at(pos);
+          ph.alpha[j] = alpha[c] >= kPhaseAbsent ? alpha[c] : 0.0;
+          if (!ghost)
+            for (int k = 0; k < 4; ++k) ph.q0[k][j] = arrays[k][c];
+          ph.It[j] = crossInterface(p, xdir, line, pos);
+        }
+        for (int f = 0; f <= n + 2; ++f) {
+          const int gf = a + f - 1;
+          ph.gm[f] = aperture(p, 0, gf);
+          ph.gp[f] = aperture(p, 1, gf);
+        }
+      }
+      double lineScale;
+      if (radial) {
+        for (int f = 1; f <= n + 1; ++f) W.area[f] = faceX_[static_cast<std::size_t>(a - 1 + f)];
+        for (int j = 2; j <= n + 1; ++j) {
+          const double r = cellX_[static_cast<std::size_t>(a - 2 + j)];
+          W.invVol[j] = 1.0 / (r * h);
+          W.invR[j] = 1.0 / r;
+        }
+        lineScale = 2.0 * std::numbers::pi * h;
+      } else {
+        std::fill(W.area.begin(), W.area.begin() + n + 4, 1.0);
+        std::fill(W.invVol.begin(), W.invVol.begin() + n + 4, 1.0 / h);
+        lineScale = rz ? 2.0 * std::numbers::pi * cellX_[static_cast<std::size_t>(line)] * h : h;
+      }
+
+      detail::LineBudget lb;
+      detail::LineFailure fail;
+      if (!fn(W, setup, ctx, lb, fail)) {
+        const int pos = a - 2 + fail.j;
+        const int i = xdir ? pos : line, k = xdir ? line : pos;
+        if (ws.failed && ws.failedLine < line) continue;
+        ws.failed = true;
+        ws.failedLine = line;
+        ws.message = fmt::format(
+            "tvd: step {} ({} sweep, dt = {:.4g} us): cell (i={}, k={}) at x = {:.6g}, z = {:.6g} "
+            "cm: {} (rho = {:.6g} g/cm^3, e = {:.6g} cm^2/us^2)",
+            step_, xdir ? "x" : "z", dt, i, k, grid_.x0 + (i + 0.5) * h, grid_.z0 + (k + 0.5) * h,
+            fail.what, fail.rho, fail.e);
+        continue;
+      }
+      for (int p = 0; p < P; ++p) {
+        const detail::PhaseLine& ph = W.phase[static_cast<std::size_t>(p)];
+        Conserved& Q = phases_.q[static_cast<std::size_t>(p)];
+        double* arrays[4] = {Q.rho.data(), xdir ? Q.mx.data() : Q.mz.data(),
+                             xdir ? Q.mz.data() : Q.mx.data(), Q.E.data()};
+        for (int j = 2; j <= n + 1; ++j) {
+          const long c = at(a - 2 + j);
+          for (int k = 0; k < 4; ++k) arrays[k][c] = ph.q0[k][j];
+        }
+      }
+      rec.floors = lb.floors.scaled(lineScale);
+      const bool edge[2] = {setup.leftEdge, setup.rightEdge};
+      const bool open[2] = {lowSide == Side::Outflow, highSide == Side::Outflow};
+      for (int e = 0; e < 2; ++e) {
+        if (!edge[e]) continue;
+        if (open[e])
+          rec.outflow += lb.edge[e].scaled(-lineScale);
+        else
+          rec.boundary += lb.edge[e].scaled(lineScale);
+      }
+    }
+  }
+  const Workspace* failed = nullptr;
+  for (const auto& w : work_)
+    if (w->failed && (failed == nullptr || w->failedLine < failed->failedLine)) failed = w.get();
+  if (failed != nullptr) {
+    const std::string msg = failed->message;
+    for (auto& v : work_) v->failed = false;
+    throw SimulationError(msg);
+  }
+  for (int line = 0; line < lines; ++line) {
+    const LineRecord& rec = lineRecords_[static_cast<std::size_t>(line)];
+    ledger_.boundary += rec.boundary;
+    ledger_.floors += rec.floors;
+    ledger_.outflow += rec.outflow;
+  }
+}
+
+// Aperture of phase p at face gf of line `line` (0 <= gf <= N) seen from `side`.
+double TvdSolver::aperture1(int p, int side, int gf, bool xdir, int line) const {
+  return xdir ? phases_.apertureX(p, side, gf, line) : phases_.apertureZ(p, side, line, gf);
+}
+
+// In-cell interface area of phase p across the line at cell `pos` (planar form, line units).
+double TvdSolver::crossInterface(int p, bool xdir, int line, int pos) const {
+  if (xdir) return phases_.apertureZ(p, 1, pos, line) - phases_.apertureZ(p, 0, pos, line + 1);
+  return phases_.apertureX(p, 1, line, pos) - phases_.apertureX(p, 0, line + 1, pos);
+}
+
+}  // namespace hvi::tvd
