@@ -50,6 +50,7 @@ void TvdSolver::initialiseCut(const cases::Scene& scene) {
       q.E[c] = a * st.rho * (st.e + 0.5 * (st.vx * st.vx + st.vz * st.vz));
     }
   }
+  phases_.volume = phases_.alpha;
   phases_.mixture(U_);
 }
 

@@ -21,6 +21,9 @@ namespace hvi::tvd::detail {
 //! through that face after every stage (Hu et al. 2006, section 2.5: 0.5): its own volume would
 //! otherwise limit the time step.
 inline constexpr double kMergeFraction = 0.5;
+//! Below this part of its fraction a phase cell is fading out of the cell within the step (a
+//! trailing edge leaving it): its stage states are intermediates, not checked as physical.
+inline constexpr double kLiveFraction = 0.1;
 
 template <class Lim, bool Radial>
 class CutLineSolver {
@@ -34,21 +37,26 @@ class CutLineSolver {
     prepare();
     for (auto& ph : W_.phase) {
       fillPhaseGhosts(ph.q0);
+      fillVolumeGhosts(ph.vol0);
       for (int k = 0; k < 4; ++k)
         std::copy(ph.q0[k].begin(), ph.q0[k].begin() + n_ + 4, ph.q1[k].begin());
+      std::copy(ph.vol0.begin(), ph.vol0.begin() + n_ + 4, ph.vol1.begin());
     }
     if (!stage(true, fail)) return false;
     for (auto& ph : W_.phase) {
       for (int k = 0; k < 4; ++k)
         std::copy(ph.w[k].begin() + 2, ph.w[k].begin() + n_ + 2, ph.q1[k].begin() + 2);
+      std::copy(ph.volW.begin() + 2, ph.volW.begin() + n_ + 2, ph.vol1.begin() + 2);
       fillPhaseGhosts(ph.q1);
+      fillVolumeGhosts(ph.vol1);
     }
     if (!stage(false, fail)) return false;
     for (int p = 0; p < P_; ++p) {
       PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
       for (int k = 0; k < 4; ++k)
         for (int j = 2; j < n_ + 2; ++j) ph.q0[k][j] = 0.5 * (ph.q0[k][j] + ph.w[k][j]);
-      resetThin(p, ph.q0, 1.0);
+      for (int j = 2; j < n_ + 2; ++j) ph.vol0[j] = 0.5 * (ph.vol0[j] + ph.volW[j]);
+      resetThin(p, ph.q0, ph.vol0, 1.0);
     }
     return true;
   }
@@ -69,6 +77,15 @@ class CutLineSolver {
 
   void fillPhaseGhosts(std::array<std::vector<double>, 4>& q) const {
     fillGhosts(q, n_, L_.left, L_.right);
+  }
+  void fillVolumeGhosts(std::vector<double>& v) const {
+    auto side = [&](Side s, int in0, int in1, int g0, int g1) {
+      if (s == Side::Loaded) return;
+      v[g0] = v[in0];
+      v[g1] = v[s == Side::Reflect ? in1 : in0];
+    };
+    side(L_.left, 2, 3, 1, 0);
+    side(L_.right, n_ + 1, n_, n_ + 2, n_ + 3);
   }
 
   // In-cell interface area of phase `ph` in cell j along the line (outward of the phase), in
@@ -123,11 +140,13 @@ class CutLineSolver {
     for (int p = 0; p < P_; ++p) {
       PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
       const auto& V = first ? ph.q0 : ph.q1;
-      for (int j = 2; j <= n_ + 1; ++j) update(ph, V, j);
+      const auto& S = first ? ph.vol0 : ph.vol1;
+      for (int j = 2; j <= n_ + 1; ++j) update(ph, V, S, j);
       merge(ph);
-      if (!positivity(p, V, fail)) return false;
+      if (!positivity(p, V, S, first, fail)) return false;
       ledgerFaces(ph);
-      if (first) resetThin(p, ph.w, 0.5);
+      if (first) resetThin(p, ph.w, ph.volW, 0.5);
+      applyDry(ph);
     }
     return true;
   }
@@ -136,16 +155,19 @@ class CutLineSolver {
   void states(int p, bool first) {
     PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
     const auto& V = first ? ph.q0 : ph.q1;
+    const auto& S = first ? ph.vol0 : ph.vol1;
     const int nb = n_ + 4;
     std::visit(
         [&](const auto& eos) {
           for (int j = 0; j < nb; ++j) {
-            if (!ph.present[j]) {
+            if (!ph.present[j] || !(S[j] > kPhaseAbsent * ph.alpha[j])) {
               ph.cs[j] = CellState{};
+              ph.sqrtRho[j] = 0.0;
+              ph.F[j] = {0.0, 0.0, 0.0, 0.0};
               for (int k = 0; k < 4; ++k) ph.U[k][j] = 0.0;
               continue;
             }
-            const double inv = 1.0 / ph.alpha[j];
+            const double inv = 1.0 / S[j];
             for (int k = 0; k < 4; ++k) ph.U[k][j] = V[k][j] * inv;
             const double r = ph.U[kRho][j];
             if (!(r > 0.0)) {
@@ -235,11 +257,16 @@ class CutLineSolver {
     }
   }
 
-  void update(PhaseLine& ph, const std::array<std::vector<double>, 4>& V, int j) {
+  void update(PhaseLine& ph, const std::array<std::vector<double>, 4>& V,
+              const std::vector<double>& S, int j) {
     if (!ph.present[j]) {
       for (int k = 0; k < 4; ++k) ph.w[k][j] = 0.0;
+      ph.volW[j] = 0.0;
       return;
     }
+    // The phase's part of the cell grows or shrinks as its interface moves with it (the
+    // interface area times the phase's velocity along the line); a full cell has no interface.
+    ph.volW[j] = S[j] + C_.dt * W_.invVol[j] * ph.cs[j].u * interfaceAlong(ph, j);
     const double lam = C_.dt * W_.invVol[j];
     const double aR = W_.area[j] * ph.ap[j], aL = W_.area[j - 1] * ph.ap[j - 1];
     const double* FR = ph.flux[j].data();
@@ -251,90 +278,157 @@ class CutLineSolver {
       // contributes the cell's own pressure (what its interface area in the closure assumes).
       const double pl = ph.ap[j - 1] > 0.0 && ph.pface[j - 1] >= 0.0 ? ph.pface[j - 1] : ph.cs[j].p;
       const double pr = ph.ap[j] > 0.0 && ph.pface[j] >= 0.0 ? ph.pface[j] : ph.cs[j].p;
-      ph.w[kMn][j] += C_.dt * 0.5 * (pl + pr) * ph.alpha[j] * W_.invR[j];
+      ph.w[kMn][j] += C_.dt * 0.5 * (pl + pr) * S[j] * W_.invR[j];
     }
   }
 
-  // As the whole-cell kernel: faces of a cell the TVD flux leaves unphysical are recomputed
-  // with the Rusanov flux; what is left of a negative internal energy is floored (booked). Mass
-  // is never removed: a phase cell that stays without positive density stops the run.
-  bool positivity(int p, const std::array<std::vector<double>, 4>& V, LineFailure& fail) {
+  // What a stage is judged by: the predictor's result itself, and for the corrector the Heun
+  // average it leads to (the corrector's own result is only an intermediate: at a trailing
+  // edge it is negative, volume and mass alike, while the average is the exact remainder).
+  double judged(const PhaseLine& ph, int k, int j, bool first) const {
+    return first ? ph.w[k][j] : 0.5 * (ph.q0[k][j] + ph.w[k][j]);
+  }
+  double judgedVolume(const PhaseLine& ph, int j, bool first) const {
+    return first ? ph.volW[j] : 0.5 * (ph.vol0[j] + ph.volW[j]);
+  }
+  // A cell keeps a state worth checking while its part is not a fading sliver.
+  bool live(const PhaseLine& ph, int j, bool first) const {
+    return judgedVolume(ph, j, first) >= kLiveFraction * ph.alpha[j];
+  }
+
+  // As the whole-cell kernel: faces of a live cell the TVD flux leaves unphysical are
+  // recomputed with the Rusanov flux, and what is left of a negative internal energy is
+  // floored (booked). Mass is never removed: a positivity flux limiter keeps every cell's mass
+  // (as judged) from going below zero, and a live cell that still cannot be kept physical
+  // stops the run.
+  bool positivity(int p, const std::array<std::vector<double>, 4>& V,
+                  const std::vector<double>& S, bool first, LineFailure& fail) {
     PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
+    auto physicalAt = [&](int j) {
+      return physical(judged(ph, kRho, j, first), judged(ph, kMn, j, first),
+                      judged(ph, kMt, j, first), judged(ph, kE, j, first));
+    };
     bool any = false;
     for (int j = 2; j <= n_ + 1; ++j) {
-      if (!ph.present[j]) continue;
-      if (!physical(ph.w[kRho][j], ph.w[kMn][j], ph.w[kMt][j], ph.w[kE][j])) {
-        ph.fallback[j - 1] = ph.fallback[j] = 1;
-        any = true;
-      }
+      if (!ph.present[j] || !live(ph, j, first) || physicalAt(j)) continue;
+      ph.fallback[j - 1] = ph.fallback[j] = 1;
+      any = true;
     }
-    if (!any) return true;
-    for (int f = 1; f <= n_ + 1; ++f) {
-      if (!ph.fallback[f] || !(ph.ap[f] > 0.0) || !(ph.cs[f].rho > 0.0) ||
-          !(ph.cs[f + 1].rho > 0.0))
-        continue;
-      const CellState& a = ph.cs[f];
-      const CellState& b = ph.cs[f + 1];
-      double UL[4], UR[4];
-      for (int k = 0; k < 4; ++k) {
-        UL[k] = ph.U[k][f];
-        UR[k] = ph.U[k][f + 1];
+    if (any) {
+      for (int f = 1; f <= n_ + 1; ++f) {
+        if (!ph.fallback[f] || !(ph.ap[f] > 0.0) || !(ph.cs[f].rho > 0.0) ||
+            !(ph.cs[f + 1].rho > 0.0))
+          continue;
+        const CellState& a = ph.cs[f];
+        const CellState& b = ph.cs[f + 1];
+        double UL[4], UR[4];
+        for (int k = 0; k < 4; ++k) {
+          UL[k] = ph.U[k][f];
+          UR[k] = ph.U[k][f + 1];
+        }
+        const double smax = std::max(std::abs(a.u) + a.c, std::abs(b.u) + b.c);
+        rusanovFlux(UL, UR, ph.F[f].data(), ph.F[f + 1].data(), smax, ph.flux[f].data());
       }
-      const double smax = std::max(std::abs(a.u) + a.c, std::abs(b.u) + b.c);
-      rusanovFlux(UL, UR, ph.F[f].data(), ph.F[f + 1].data(), smax, ph.flux[f].data());
+      wallFaces(ph);
+      std::fill(ph.fallback.begin(), ph.fallback.begin() + n_ + 4, 0);
+      // Every cell again (not only those next to a recomputed face): the merges pooled pairs
+      // of cells, and redoing one of a pair would count its partner's share twice.
+      for (int j = 2; j <= n_ + 1; ++j) update(ph, V, S, j);
+      merge(ph);
     }
-    wallFaces(ph);
-    // Every cell again (not only those next to a recomputed face): the merges pooled pairs
-    // of cells, and redoing one of a pair would count its partner's share twice.
-    for (int j = 2; j <= n_ + 1; ++j) update(ph, V, j);
-    std::fill(ph.fallback.begin(), ph.fallback.begin() + n_ + 4, 0);
-    merge(ph);
     // A cut cell can still lose more than it holds (its faces are large for its volume): the
     // faces that carry its mass out are scaled down until it keeps none to spare (a
     // positivity-preserving flux limiter in the sense of Hu, Adams and Shu, J. Comput. Phys.
     // 242 (2013) 169). A face flux is shared by its two cells, so this stays conservative.
+    absorbFading(ph);
     for (int pass = 0; pass < 8; ++pass) {
       bool short_ = false;
       for (int j = 2; j <= n_ + 1; ++j) {
-        if (!ph.present[j] || !(ph.w[kRho][j] < 0.0)) continue;
+        if (!ph.present[j]) continue;
+        // judged mass >= 0: the predictor's result, the corrector's average
+        const double floor = first ? 0.0 : -ph.q0[kRho][j];
+        const double deficit = floor - ph.w[kRho][j];
+        if (!(deficit > 0.0)) continue;
         const double lam = C_.dt * W_.invVol[j];
-        const double outL = lam * W_.area[j - 1] * ph.ap[j - 1] * std::max(-ph.flux[j - 1][kRho], 0.0);
+        const double outL =
+            lam * W_.area[j - 1] * ph.ap[j - 1] * std::max(-ph.flux[j - 1][kRho], 0.0);
         const double outR = lam * W_.area[j] * ph.ap[j] * std::max(ph.flux[j][kRho], 0.0);
         const double out = outL + outR;
         if (!(out > 0.0)) continue;
-        const double theta = std::max(0.0, 1.0 - (-ph.w[kRho][j]) / out * (1.0 + 1e-12));
+        const double theta = std::max(0.0, 1.0 - deficit / out * (1.0 + 1e-12));
         for (int f : {j - 1, j}) {
           const bool leaving = f == j ? ph.flux[f][kRho] > 0.0 : ph.flux[f][kRho] < 0.0;
           if (!leaving) continue;
-          for (int k = 0; k < 4; ++k) ph.flux[f][k] *= theta;
+          // The face's two cells take the change directly (a full update would undo the
+          // absorbed fading cells).
+          const double s = W_.area[f] * ph.ap[f] * (1.0 - theta);
+          for (int k = 0; k < 4; ++k) {
+            const double d = s * ph.flux[f][k];
+            if (f >= 2) ph.w[k][f] += C_.dt * W_.invVol[f] * d;
+            if (f + 1 <= n_ + 1) ph.w[k][f + 1] -= C_.dt * W_.invVol[f + 1] * d;
+            ph.flux[f][k] *= theta;
+          }
         }
         short_ = true;
       }
       if (!short_) break;
-      for (int j = 2; j <= n_ + 1; ++j) update(ph, V, j);
-      merge(ph);
     }
     for (int j = 2; j <= n_ + 1; ++j) {
-      if (!ph.present[j]) continue;
-      const double r = ph.w[kRho][j], m = ph.w[kMn][j], t = ph.w[kMt][j], E = ph.w[kE][j];
-      if (r >= 0.0 && r < 1e-300 * ph.alpha[j]) {  // emptied to round-off: no state left
-        ph.w[kRho][j] = ph.w[kMn][j] = ph.w[kMt][j] = ph.w[kE][j] = 0.0;
-        continue;
-      }
+      if (!ph.present[j] || !live(ph, j, first)) continue;
+      const double r = judged(ph, kRho, j, first), m = judged(ph, kMn, j, first);
+      const double t = judged(ph, kMt, j, first), E = judged(ph, kE, j, first);
       if (!(r > 0.0) || !std::isfinite(E) || !std::isfinite(m) || !std::isfinite(t)) {
         fail.j = j;
-        fail.rho = r / ph.alpha[j];
+        fail.rho = r / judgedVolume(ph, j, first);
         fail.e = E / r - 0.5 * (m * m + t * t) / (r * r);
         fail.what = "phase density not positive or state not finite after the positivity fallback";
         return false;
       }
       const double kin = 0.5 * (m * m + t * t) / r;
-      if (E < kin) {
-        B_.floors.energy += 0.5 * (kin - E) / W_.invVol[j];
-        ph.w[kE][j] = kin;
+      if (E < kin) {  // raise the judged energy to the kinetic energy (e = 0), booked
+        const double add = (kin - E) * (first ? 1.0 : 2.0);
+        B_.floors.energy += 0.5 * add / W_.invVol[j];  // the final state changes by add / 2
+        ph.w[kE][j] += add;
       }
     }
     return true;
+  }
+
+  // A cell whose part the stage moved out entirely (a trailing edge crossing its face: the
+  // working volume went below zero, and with it, consistently, its mass) hands what it overdrew
+  // to the neighbour through the face it drained by, and that face is dry for the rest of the
+  // step: the edge now lies in the neighbour, whose part shrinks from the next stage on.
+  void absorbFading(PhaseLine& ph) {
+    for (int j = 2; j <= n_ + 1; ++j) {
+      if (!ph.present[j] || !(ph.volW[j] < 0.0)) continue;
+      const double outR = ph.ap[j] > 0.0 && j + 1 <= n_ + 1 ? W_.area[j] * ph.ap[j] * ph.flux[j][kRho] : 0.0;
+      const double outL =
+          ph.ap[j - 1] > 0.0 && j - 1 >= 2 ? -W_.area[j - 1] * ph.ap[j - 1] * ph.flux[j - 1][kRho] : 0.0;
+      int t = -1, f = -1;
+      if (outR > 0.0 && outR >= outL) {
+        t = j + 1;
+        f = j;
+      } else if (outL > 0.0) {
+        t = j - 1;
+        f = j - 1;
+      }
+      if (t < 0) continue;
+      const double vj = 1.0 / W_.invVol[j], vt = 1.0 / W_.invVol[t];
+      for (int k = 0; k < 4; ++k) {
+        ph.w[k][t] += ph.w[k][j] * vj / vt;
+        ph.w[k][j] = 0.0;
+      }
+      ph.volW[t] += ph.volW[j] * vj / vt;
+      ph.volW[j] = 0.0;
+      ph.dry[f] = 1;
+    }
+  }
+  void applyDry(PhaseLine& ph) {
+    for (int f = 1; f <= n_ + 1; ++f) {
+      if (!ph.dry[f]) continue;
+      ph.dry[f] = 0;
+      ph.ap[f] = ph.uL[f] = ph.uR[f] = ph.gm[f] = ph.gp[f] = 0.0;
+    }
   }
 
   // Small phase cells share one state with their neighbour through the larger wetted face: the
@@ -342,7 +436,7 @@ class CutLineSolver {
   void merge(PhaseLine& ph) {
     for (int j = 2; j <= n_ + 1; ++j) {
       if (!ph.present[j]) continue;
-      const double vol = ph.alpha[j] / W_.invVol[j];
+      const double vol = ph.volW[j] / W_.invVol[j];
       const double fl = W_.area[j - 1] * ph.gp[j - 1], fr = W_.area[j] * ph.gm[j];
       const double face = std::max(fl, fr) * C_.h;
       // Also a cell the stage left without positive mass: pooled, it takes its partner's state.
@@ -356,12 +450,13 @@ class CutLineSolver {
       const double vj = 1.0 / W_.invVol[j], vt = 1.0 / W_.invVol[t];
       // Pooling a deficit would only spread it: the positivity limiter treats it first.
       if (!(ph.w[kRho][j] * vj + ph.w[kRho][t] * vt > 0.0)) continue;
-      const double pv = ph.alpha[j] * vj + ph.alpha[t] * vt;
+      const double pv = ph.volW[j] * vj + ph.volW[t] * vt;
+      if (!(pv > 0.0)) continue;
       for (int k = 0; k < 4; ++k) {
         const double total = ph.w[k][j] * vj + ph.w[k][t] * vt;
         const double u = total / pv;
-        ph.w[k][j] = ph.alpha[j] * u;
-        ph.w[k][t] = ph.alpha[t] * u;
+        ph.w[k][j] = ph.volW[j] * u;
+        ph.w[k][t] = ph.volW[t] * u;
       }
     }
   }
@@ -382,11 +477,12 @@ class CutLineSolver {
 
   // Below the vacuum density a phase cell keeps its mass at rest and cold (booked), as in the
   // whole-cell kernel.
-  void resetThin(int p, std::array<std::vector<double>, 4>& q, double weight) {
+  void resetThin(int p, std::array<std::vector<double>, 4>& q, const std::vector<double>& S,
+                 double weight) {
     PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
     for (int j = 2; j <= n_ + 1; ++j) {
       if (!ph.present[j]) continue;
-      if (q[kRho][j] >= C_.rhoCut[p] * ph.alpha[j] ||
+      if (q[kRho][j] >= C_.rhoCut[p] * S[j] ||
           (q[kMn][j] == 0.0 && q[kMt][j] == 0.0 && q[kE][j] == 0.0))
         continue;
       const double vol = weight / W_.invVol[j];

@@ -15,12 +15,17 @@ struct PhaseLine {
   explicit PhaseLine(int capacity);
   std::array<std::vector<double>, 4> q0, q1, w, ex;  // start, stage input, stage result, exchange
   std::array<std::vector<double>, 4> U;              // state of the stage input, per phase volume
-  std::vector<double> alpha;                         // volume fraction per cell
+  std::vector<double> alpha;  // volume fraction per cell from the marker lines (step start)
+  // Working volume fraction: moved by the phase's own velocity through its interface area
+  // within the step (start, stage input, stage result), so that U = q / vol stays consistent
+  // while mass crosses the faces of a cut cell.
+  std::vector<double> vol0, vol1, volW;
   std::vector<double> gm, gp;  // face apertures seen from the lower / upper cell (one-sided)
   std::vector<double> ap;      // paired aperture: the phase on both sides of the face
   std::vector<double> uL, uR;  // unpaired wet part of a face seen from its lower / upper cell
   std::vector<double> It;      // in-cell interface area across the line (planar form)
   std::vector<unsigned char> present;
+  std::vector<unsigned char> dry;  // faces a trailing edge crossed in this stage
   std::vector<CellState> cs;
   std::vector<double> sqrtRho;
   std::vector<std::array<double, 4>> F, flux;

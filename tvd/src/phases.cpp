@@ -16,8 +16,10 @@ PhaseLine::PhaseLine(int capacity) {
   const auto nb = static_cast<std::size_t>(capacity) + 4;
   for (auto* a : {&q0, &q1, &w, &ex, &U})
     for (auto& v : *a) v.assign(nb, 0.0);
-  for (auto* v : {&alpha, &gm, &gp, &ap, &uL, &uR, &It, &sqrtRho, &pface}) v->assign(nb, 0.0);
+  for (auto* v : {&alpha, &vol0, &vol1, &volW, &gm, &gp, &ap, &uL, &uR, &It, &sqrtRho, &pface})
+    v->assign(nb, 0.0);
   present.assign(nb, 0);
+  dry.assign(nb, 0);
   cs.assign(nb, CellState{});
   F.assign(nb, {});
   flux.assign(nb, {});
@@ -41,58 +43,80 @@ void Phases::resize(int phases, const GridSpec& g) {
   count = phases;
   grid = g;
   const auto cells = static_cast<std::size_t>(g.cells());
-  const auto fx = static_cast<std::size_t>(2L * g.nz * (g.nx + 1));
-  const auto fz = static_cast<std::size_t>(2L * (g.nz + 1) * g.nx);
   q.assign(static_cast<std::size_t>(phases), Conserved{});
   for (auto& s : q)
     for (auto* v : {&s.rho, &s.mx, &s.mz, &s.E}) v->assign(cells, 0.0);
   alpha.assign(static_cast<std::size_t>(phases), std::vector<double>(cells, 0.0));
-  ax.assign(static_cast<std::size_t>(phases), std::vector<double>(fx, 0.0));
-  az.assign(static_cast<std::size_t>(phases), std::vector<double>(fz, 0.0));
+  volume = alpha;
+  faces = FaceApertures{};
 }
 
 namespace {
 
-// Sums per-object values into per-phase ones, capped at 1, then scales the phases of each
-// entry down together where they exceed 1 (two bodies' lines overlapping by round-off).
+// Sums per-object cell fractions into per-phase ones, capped at 1, then scales the phases of
+// each cell down together where they exceed 1 (two bodies' lines overlapping by round-off).
 void sumByPhase(const double* perObject, std::size_t n, const std::vector<int>& objectMaterial,
                 std::vector<std::vector<double>>& out) {
-  for (auto& v : out) std::fill(v.begin(), v.end(), 0.0);
+  std::vector<int> objects(out.size(), 0);
+  for (int m : objectMaterial) ++objects[static_cast<std::size_t>(m)];
+  for (std::size_t p = 0; p < out.size(); ++p)
+    if (objects[p] != 1) std::fill(out[p].begin(), out[p].end(), 0.0);
   for (std::size_t o = 0; o < objectMaterial.size(); ++o) {
-    double* dst = out[static_cast<std::size_t>(objectMaterial[o])].data();
+    const auto p = static_cast<std::size_t>(objectMaterial[o]);
+    double* dst = out[p].data();
     const double* src = perObject + o * n;
-    for (std::size_t c = 0; c < n; ++c) dst[c] += src[c];
+    if (objects[p] == 1) {
+      std::copy(src, src + n, dst);
+      continue;
+    }
+    for (std::size_t c = 0; c < n; ++c) dst[c] = std::min(dst[c] + src[c], 1.0);
   }
+  if (out.size() < 2) return;
   for (std::size_t c = 0; c < n; ++c) {
     double total = 0.0;
-    for (auto& v : out) {
-      v[c] = std::min(v[c], 1.0);
-      total += v[c];
-    }
+    for (auto& v : out) total += v[c];
     if (total > 1.0)
       for (auto& v : out) v[c] /= total;
+  }
+}
+
+// Where the phases' apertures of one face side exceed 1 together, each is scaled to fit.
+void fitApertures(std::vector<double>& a, int phases) {
+  if (phases < 2) return;
+  const std::size_t n = a.size() / static_cast<std::size_t>(phases);
+  for (std::size_t f = 0; f < n; ++f) {
+    double total = 0.0;
+    for (int p = 0; p < phases; ++p) total += a[static_cast<std::size_t>(p) * n + f];
+    if (total > 1.0)
+      for (int p = 0; p < phases; ++p) a[static_cast<std::size_t>(p) * n + f] /= total;
   }
 }
 
 }  // namespace
 
 void Phases::measure(const MarkerSet& markers, const std::vector<int>& objectMaterial,
-                     const std::vector<double>& fraction, FaceApertures& apertures) {
+                     const std::vector<double>& fraction) {
   const auto cells = static_cast<std::size_t>(grid.cells());
   sumByPhase(fraction.data(), cells, objectMaterial, alpha);
   for (auto& a : alpha)
     for (double& v : a)
       if (v < kPhaseAbsent) v = 0.0;
-  markers.faceApertures(grid, apertures);
-  // x faces: objects * 2 sides * nz * (nx + 1); per side the same layout as Phases::ax.
-  const auto fx = static_cast<std::size_t>(2L * grid.nz * (grid.nx + 1));
-  const auto fz = static_cast<std::size_t>(2L * (grid.nz + 1) * grid.nx);
-  sumByPhase(apertures.x.data(), fx, objectMaterial, ax);
-  sumByPhase(apertures.z.data(), fz, objectMaterial, az);
+  measureFaces(markers, objectMaterial);
+}
+
+void Phases::measureFaces(const MarkerSet& markers, const std::vector<int>& objectMaterial) {
+  // Grouped by material: one winding number per phase, so the union of its bodies is wet once.
+  markers.faceApertures(grid, faces, &objectMaterial, count);
+  fitApertures(faces.x, count);
+  fitApertures(faces.z, count);
 }
 
 void Phases::mixture(Conserved& U) const {
   const auto cells = static_cast<std::size_t>(grid.cells());
+  if (count == 1) {
+    U = q.front();
+    return;
+  }
   for (auto* v : {&U.rho, &U.mx, &U.mz, &U.E}) v->assign(cells, 0.0);
   for (const auto& s : q)
     for (std::size_t c = 0; c < cells; ++c) {
@@ -103,10 +127,48 @@ void Phases::mixture(Conserved& U) const {
     }
 }
 
+// Where the marker lines give a cell more of the phase than the sweeps moved its part to (the
+// working fraction), material comes from the neighbours that the sweeps left with more than the
+// lines give them, face neighbours first, at the donor's own state: exactly what crossed a face
+// ahead of the geometry (a leading edge passing into the next cell) goes back where the lines
+// put it, and a uniform flow stays uniform.
+void Phases::settle(const CellVolumes& volumes, int p) {
+  const int nx = grid.nx, nz = grid.nz;
+  auto& a = alpha[static_cast<std::size_t>(p)];
+  auto& w = volume[static_cast<std::size_t>(p)];
+  Conserved& s = q[static_cast<std::size_t>(p)];
+  double* comp[4] = {s.rho.data(), s.mx.data(), s.mz.data(), s.E.data()};
+  constexpr double kTiny = 1e-12;
+  const int di[8] = {-1, 1, 0, 0, -1, 1, -1, 1}, dk[8] = {0, 0, -1, 1, -1, -1, 1, 1};
+  for (int k = 0; k < nz; ++k)
+    for (int i = 0; i < nx; ++i) {
+      const auto c = static_cast<std::size_t>(static_cast<long>(k) * nx + i);
+      if (!(a[c] - w[c] > kTiny)) continue;
+      const double vc = volumes(static_cast<long>(c));
+      for (int n = 0; n < 8 && a[c] - w[c] > kTiny; ++n) {
+        const int ii = i + di[n], kk = k + dk[n];
+        if (ii < 0 || ii >= nx || kk < 0 || kk >= nz) continue;
+        const auto d = static_cast<std::size_t>(static_cast<long>(kk) * nx + ii);
+        if (!(w[d] - a[d] > kTiny) || !(s.rho[d] > 0.0) || !(w[d] > 0.0)) continue;
+        const double vd = volumes(static_cast<long>(d));
+        const double take = std::min((a[c] - w[c]) * vc, (w[d] - a[d]) * vd);  // volume
+        const double f = take / (w[d] * vd);  // share of the donor's part moved
+        for (double* v : comp) {
+          const double moved = f * v[d] * vd;
+          v[c] += moved / vc;
+          v[d] -= moved / vd;
+        }
+        w[c] += take / vc;
+        w[d] -= take / vd;
+      }
+    }
+}
+
 long Phases::repair(const CellVolumes& volumes, const std::vector<std::vector<double>>& oldAlpha) {
   const int nx = grid.nx, nz = grid.nz;
   long orphans = 0;
   for (int p = 0; p < count; ++p) {
+    settle(volumes, p);
     auto& a = alpha[static_cast<std::size_t>(p)];
     const auto& a0 = oldAlpha[static_cast<std::size_t>(p)];
     Conserved& s = q[static_cast<std::size_t>(p)];

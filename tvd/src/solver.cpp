@@ -59,7 +59,7 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
 }
 
 void TvdSolver::measurePhases() {
-  phases_.measure(ownership_.markers(), objectMaterial_, ownership_.fractions(), apertures_);
+  phases_.measure(ownership_.markers(), objectMaterial_, ownership_.fractions());
 }
 
 void TvdSolver::setUpGrid(const cases::Scene& scene) {
@@ -238,9 +238,11 @@ double TvdSolver::advance(double tStop) {
     sweepCut(step_ % 2 == 0 ? 1 : 0, dt);
     phases_.mixture(U_);
     ownership_.move(U_, dt);
-    alphaOld_ = phases_.alpha;
+    std::swap(alphaOld_, phases_.alpha);  // the old fractions, for the repair
+    if (phases_.alpha.size() != alphaOld_.size()) phases_.alpha = alphaOld_;
     measurePhases();
     orphans_ += phases_.repair(cellVolumes_, alphaOld_);
+    phases_.volume = phases_.alpha;
     phases_.mixture(U_);
   } else if (step_ % 2 == 0) {
     sweep(0, dt);

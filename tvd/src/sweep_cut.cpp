@@ -133,6 +133,7 @@ void TvdSolver::sweepCut(int direction, double dt) {
         const double* arrays[4] = {Q.rho.data(), xdir ? Q.mx.data() : Q.mz.data(),
                                    xdir ? Q.mz.data() : Q.mx.data(), Q.E.data()};
         const double* alpha = phases_.alpha[static_cast<std::size_t>(p)].data();
+        const double* volume = phases_.volume[static_cast<std::size_t>(p)].data();
         for (int j = 0; j < n + 4; ++j) {
           int pos = a - 2 + j;
           bool ghost = false;
@@ -145,6 +146,7 @@ void TvdSolver::sweepCut(int direction, double dt) {
           }
           const long c = at(pos);
           ph.alpha[j] = alpha[c] >= kPhaseAbsent ? alpha[c] : 0.0;
+          ph.vol0[j] = ph.alpha[j] > 0.0 ? volume[c] : 0.0;
           if (!ghost)
             for (int k = 0; k < 4; ++k) ph.q0[k][j] = arrays[k][c];
           ph.It[j] = crossInterface(p, xdir, line, pos);
@@ -190,9 +192,11 @@ void TvdSolver::sweepCut(int direction, double dt) {
         Conserved& Q = phases_.q[static_cast<std::size_t>(p)];
         double* arrays[4] = {Q.rho.data(), xdir ? Q.mx.data() : Q.mz.data(),
                              xdir ? Q.mz.data() : Q.mx.data(), Q.E.data()};
+        double* volume = phases_.volume[static_cast<std::size_t>(p)].data();
         for (int j = 2; j <= n + 1; ++j) {
           const long c = at(a - 2 + j);
           for (int k = 0; k < 4; ++k) arrays[k][c] = ph.q0[k][j];
+          volume[c] = ph.vol0[j];
         }
       }
       rec.floors = lb.floors.scaled(lineScale);

@@ -81,7 +81,161 @@ TEST(TvdCutCells, ImpactConservesEveryMaterial) {
                 t1.energy() / t0.energy() - 1.0);
     EXPECT_NEAR(m1[0], m0[0], 1e-12 * m0[0]);
     EXPECT_NEAR(m1[1], m0[1], 1e-12 * m0[1]);
+    // Every exchange, merge and repair moves energy between cells or phases; only the floors
+    // (booked) change the total: the ledger closes to round-off.
+    const Budget b = solver.ledger().sum();
+    std::printf("    energy booked by the floors %.3e of the total\n", b.energy / t0.energy());
+    EXPECT_NEAR(t1.energy() - t0.energy(), b.energy, 1e-12 * t0.energy());
+    EXPECT_EQ(solver.ledger().interfaces.mass, 0.0);
+    EXPECT_EQ(solver.ledger().ownerChanges.mass, 0.0);
   }
+}
+
+// A plate of aluminium resting on one of copper (Mie-Gruneisen), both at P = 0 and at rest,
+// their contact inside a cell row: nothing may move (docs/tvd.md: the closure of the interface
+// areas makes a uniform pressure exert no net force on any phase's part of a cell).
+TEST(TvdCutCells, PlateStackStaysAtRest) {
+  cases::Scene s = cutScene(-1.0, 1.0, -1.0, 1.0, 0.05);
+  s.materials.push_back(material("aluminium", eos::aluminiumStudy()));
+  s.materials.push_back(material("copper", eos::MieGruneisen{}));
+  s.bodies.push_back(body("top", 0, cases::Rect{-0.61, 0.58, 0.013, 0.33}, {2.79, {}, 0.0}));
+  s.bodies.push_back(body("bottom", 1, cases::Rect{-0.72, 0.66, -0.41, 0.013}, {8.93, {}, 0.0}));
+  TvdSolver solver(s);
+  const auto m0 = phaseMasses(solver);
+  for (int n = 0; n < 200; ++n) solver.advance(1e9);
+  const auto m1 = phaseMasses(solver);
+  std::printf("  mass change %.3e / %.3e, max speed %.3e\n", m1[0] / m0[0] - 1.0,
+              m1[1] / m0[1] - 1.0, maxSpeed(solver));
+  for (int p = 0; p < 2; ++p) EXPECT_NEAR(m1[p], m0[p], 1e-12 * m0[p]);
+  EXPECT_LT(maxSpeed(solver), 1e-10 * 0.39);  // 1e-10 of copper's sound speed
+}
+
+// CASES.md two-material slip (as TvdMarkerFlow.TwoMaterialContactSlips): aluminium slides at
+// 0.5 cm/us over copper at rest along a contact at 45 degrees to the grid. Each phase keeps its
+// own state in the cut cells, only p* (zero here) passes between them, so the states next to
+// the contact stay exact.
+TEST(TvdCutCells, TwoMaterialContactSlips) {
+  const double h = 0.02, v = 0.5 / std::sqrt(2.0);
+  cases::Scene s = cutScene(-1.6, 1.6, -1.6, 1.6, h);
+  s.materials.push_back(material("aluminium", eos::aluminiumStudy()));
+  s.materials.push_back(material("copper", eos::MieGruneisen{}));
+  s.bodies.push_back(body("slider", 0,
+                          cases::Polygon{{{-0.7, -0.7}, {0.7, 0.7}, {0, 1.4}, {-1.4, 0}}},
+                          {2.79, {v, v}, 0.0}));
+  s.bodies.push_back(body("base", 1,
+                          cases::Polygon{{{-0.7, -0.7}, {0, -1.4}, {1.4, 0}, {0.7, 0.7}}},
+                          {8.93, {}, 0.0}));
+  TvdSolver solver(s);
+  runTo(solver, 0.4);
+  double err = 0.0;
+  const int nx = solver.grid().nx;
+  const Phases& ph = solver.phases();
+  for (int p = 0; p < 2; ++p) {
+    const Conserved& q = ph.q[static_cast<std::size_t>(p)];
+    const auto& a = ph.alpha[static_cast<std::size_t>(p)];
+    const double rho0 = p == 0 ? 2.79 : 8.93, vx = p == 0 ? v : 0.0;
+    for (std::size_t c = 0; c < q.rho.size(); ++c) {
+      const double x = -1.6 + (static_cast<double>(c % nx) + 0.5) * h;
+      const double z = -1.6 + (static_cast<double>(c / nx) + 0.5) * h;
+      if (std::hypot(x, z) > 0.3 || !(a[c] >= kPhaseAbsent)) continue;
+      err = std::max({err, std::abs(q.rho[c] / a[c] / rho0 - 1),
+                      std::abs(q.mx[c] / q.rho[c] - vx), std::abs(q.mz[c] / q.rho[c] - vx)});
+    }
+  }
+  std::printf("  slip at 45 degrees, cut cells: max state error near the contact %.2e\n", err);
+  EXPECT_LT(err, 1e-6);
+}
+
+// An aluminium disk at P = 0 carried through vacuum for 20 diameters: the cut cells keep its
+// mass exactly and its outline within 1.5 cells of the exact one (markers.md: uniform advection
+// moves the markers exactly). Its interior does not keep its state to round-off (issue 13 asks
+// for it): the faces' apertures are those of the start of each step, so where a curved outline
+// slides along a face the swept volume is off by half the aperture change, the repair moves
+// that volume between neighbours, and what it cannot match shows as density noise in the
+// outline cells (measured +-7 % after 2 us) that sends waves inward. Printed, not asserted.
+// An axis-aligned block is exact (TvdCutCells.BlockCarriedExactly).
+TEST(TvdCutCells, DiskCarriedTwentyDiameters) {
+  const double h = 0.05, R = 0.25, u = 0.5;
+  cases::Scene s = cutScene(-0.6, 10.8, -0.6, 0.6, h);
+  s.materials.push_back(material("aluminium", eos::aluminiumStudy()));
+  s.bodies.push_back(body("disk", 0, cases::Disk{{0.0, 0.013}, R}, {2.79, {u, 0.0}, 0.0}));
+  TvdSolver solver(s);
+  const auto m0 = phaseMasses(solver);
+  const double t = 20 * 2 * R / u;
+  runTo(solver, t);
+  const auto m1 = phaseMasses(solver);
+  const Phases& ph = solver.phases();
+  const Conserved& q = ph.q[0];
+  const auto& a = ph.alpha[0];
+  const int nx = solver.grid().nx;
+  double interior = 0.0, outside = 0.0;
+  for (std::size_t c = 0; c < q.rho.size(); ++c) {
+    const double x = -0.6 + (static_cast<double>(c % nx) + 0.5) * h - u * t;
+    const double z = -0.6 + (static_cast<double>(c / nx) + 0.5) * h - 0.013;
+    const double r = std::hypot(x, z);
+    if (r < R - 2 * h && a[c] >= kPhaseAbsent)
+      interior = std::max({interior, std::abs(q.rho[c] / a[c] / 2.79 - 1),
+                           std::abs(q.mx[c] / q.rho[c] - u) / u, std::abs(q.mz[c] / q.rho[c]) / u});
+    if (r > R + 1.5 * h && a[c] >= kPhaseAbsent) outside = std::max(outside, a[c]);
+  }
+  std::printf("  %ld steps: mass change %.3e, interior state error %.3e (not asserted), "
+              "material beyond R + 1.5 h %.3e\n",
+              solver.step(), m1[0] / m0[0] - 1.0, interior, outside);
+  EXPECT_NEAR(m1[0], m0[0], 1e-12 * m0[0]);
+  EXPECT_EQ(outside, 0.0);
+}
+
+// A block with edges along grid lines (offset from them) carried through vacuum along x:
+// its trailing edge leaves cells and its leading edge enters them every few steps, and each
+// phase cell's working fraction moves exactly with the fluxes, so the state stays exact.
+TEST(TvdCutCells, BlockCarriedExactly) {
+  const double h = 0.05, u = 0.5;
+  cases::Scene s = cutScene(-0.6, 1.8, -0.6, 0.6, h);
+  s.materials.push_back(material("aluminium", eos::aluminiumStudy()));
+  s.bodies.push_back(
+      body("block", 0, cases::Rect{-0.213, 0.237, -0.187, 0.263}, {2.79, {u, 0.0}, 0.0}));
+  TvdSolver solver(s);
+  const auto m0 = phaseMasses(solver);
+  runTo(solver, 2.0);  // 1 cm: 20 cells, every column entered and left
+  const Phases& ph = solver.phases();
+  double err = 0.0;
+  for (std::size_t c = 0; c < ph.q[0].rho.size(); ++c) {
+    const double a = ph.alpha[0][c];
+    if (!(a >= kPhaseAbsent)) continue;
+    err = std::max({err, std::abs(ph.q[0].rho[c] / a / 2.79 - 1),
+                    std::abs(ph.q[0].mx[c] / ph.q[0].rho[c] - u) / u,
+                    std::abs(ph.q[0].mz[c] / ph.q[0].rho[c]) / u});
+  }
+  std::printf("  block after 1 cm: state error %.3e, marker area %.9f (0.2025)\n", err,
+              solver.markers().area(0));
+  EXPECT_NEAR(phaseMasses(solver)[0], m0[0], 1e-12 * m0[0]);
+  // Round-off of 108 steps of fluxes and fractions (each ~1e-16 relative): 1e-12.
+  EXPECT_LT(err, 1e-12);
+}
+
+// A checkpoint written at an odd step of a cut-cell impact restarts bit for bit.
+TEST(TvdCutCells, RestartIsBitForBit) {
+  cases::Scene s = cutScene(-1.0, 1.0, -1.0, 1.0, 0.05);
+  s.materials.push_back(material("aluminium", eos::aluminiumStudy()));
+  s.materials.push_back(material("copper", eos::MieGruneisen{}));
+  s.bodies.push_back(body("plate", 0, cases::Rect{-0.8, 0.8, -0.3, 0.013}, {2.79, {}, 0.0}));
+  s.bodies.push_back(body("disk", 1, cases::Disk{{0.0, 0.263}, 0.25}, {8.93, {0.0, -0.5}, 0.0}));
+  TvdSolver a(s);
+  for (int n = 0; n < 31; ++n) a.advance(1e9);
+  std::stringstream ck;
+  a.writeCheckpoint(ck);
+  TvdSolver b(s);
+  b.readCheckpoint(ck);
+  for (int n = 0; n < 20; ++n) {
+    a.advance(1e9);
+    b.advance(1e9);
+  }
+  for (int p = 0; p < 2; ++p) {
+    EXPECT_EQ(a.phases().q[p].rho, b.phases().q[p].rho);
+    EXPECT_EQ(a.phases().q[p].E, b.phases().q[p].E);
+    EXPECT_EQ(a.phases().alpha[p], b.phases().alpha[p]);
+  }
+  EXPECT_EQ(a.conserved().mx, b.conserved().mx);
 }
 
 }  // namespace

@@ -26,17 +26,17 @@ struct Phases {
   GridSpec grid;
   std::vector<Conserved> q;
   std::vector<std::vector<double>> alpha;
-  //! x faces: ax[p][(side * nz + k) * (nx + 1) + i]; z faces: az[p][(side * (nz + 1) + k) * nx
-  //! + i]; side 0 seen from the lower cell, 1 from the upper cell (FaceApertures).
-  std::vector<std::vector<double>> ax, az;
+  //! Working fractions within a step: alpha at its start, then moved by each sweep with the
+  //! phases' velocities (docs/tvd.md); the marker lines give alpha again after the step.
+  std::vector<std::vector<double>> volume;
+  //! One-sided face apertures per phase (FaceApertures with one slot per material).
+  FaceApertures faces;
 
   [[nodiscard]] double apertureX(int p, int side, int i, int k) const {
-    return ax[static_cast<std::size_t>(p)][static_cast<std::size_t>(
-        (static_cast<long>(side) * grid.nz + k) * (grid.nx + 1) + i)];
+    return faces.ax(p, side, i, k);
   }
   [[nodiscard]] double apertureZ(int p, int side, int i, int k) const {
-    return az[static_cast<std::size_t>(p)][static_cast<std::size_t>(
-        (static_cast<long>(side) * (grid.nz + 1) + k) * grid.nx + i)];
+    return faces.az(p, side, i, k);
   }
 
   //! Sizes every array for `phases` materials on `grid`, all empty.
@@ -44,15 +44,20 @@ struct Phases {
   //! Volume fractions and apertures from the marker lines; objects of one material are one
   //! phase (their coverage summed, capped at 1), and where the phases together cover more than a
   //! cell (marker lines of two bodies overlapping by round-off) each is scaled to fit.
-  //! `fraction` is every object's cell fractions (MarkerSet::rasterize); `apertures` scratch.
+  //! `fraction` is every object's cell fractions (MarkerSet::rasterize).
   void measure(const MarkerSet& markers, const std::vector<int>& objectMaterial,
-               const std::vector<double>& fraction, FaceApertures& apertures);
+               const std::vector<double>& fraction);
   //! After the volume fractions change: material left in a cell its phase no longer occupies
   //! goes to the neighbour of that phase with the largest fraction, and a cell the phase newly
   //! occupies shares the state of that neighbour (conservative averages of the integrals,
   //! Hu et al. 2006, section 2.5). `oldAlpha` is the fraction before the change; a phase with
   //! no neighbour within two rings keeps its old fraction there (an orphan, counted).
   long repair(const CellVolumes& volumes, const std::vector<std::vector<double>>& oldAlpha);
+  //! The face apertures alone, from `markers` (the lines at mid-step).
+  void measureFaces(const MarkerSet& markers, const std::vector<int>& objectMaterial);
+  //! First part of repair for phase p: material the sweeps carried ahead of the marker lines
+  //! goes to the neighbouring cells the lines give it (working fraction `volume` against alpha).
+  void settle(const CellVolumes& volumes, int p);
   //! Mixture state: the sum of the phases' q.
   void mixture(Conserved& U) const;
 };

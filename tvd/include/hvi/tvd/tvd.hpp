@@ -135,7 +135,6 @@ class TvdSolver final : public Solver {
   bool cut_ = false;     // conservative cut-cell interfaces (markers only)
   Phases phases_;        // cut-cell mode: per material fractions, apertures and states
   std::vector<std::vector<double>> alphaOld_;  // cut-cell mode: fractions before the marker step
-  FaceApertures apertures_;                     // cut-cell mode: scratch of measurePhases
   long orphans_ = 0;                            // cut-cell mode: cells kept off the geometry
 
   // Sweep scratch, one per thread, and the per-line ledger records (summed in line order after
