@@ -5,10 +5,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <ctime>
 
 #include "hvi/common/units.hpp"
 #include "hvi/eos/eos.hpp"
+#include "hvi/cases/names.hpp"
 #include "hvi/tvd/tvd.hpp"
 
 #ifdef _OPENMP
@@ -108,9 +110,32 @@ void throughput(double h, int steps) {
       updates / wall / threads(), cpu, updates / cpu);
 }
 
-void runVariant1(double tEnd, bool markers) {
+// Cut cells of a conservative run (some phase with 0 < alpha < 1) per cell length of marker
+// line: the thickness, in cells, of the layer the interfaces occupy (issue 13 bounds it by 2).
+double cutLayerCells(const tvd::TvdSolver& solver) {
+  const tvd::Phases& ph = solver.phases();
+  long cut = 0;
+  for (long c = 0; c < solver.grid().cells(); ++c) {
+    for (int p = 0; p < ph.count; ++p) {
+      const double a = ph.alpha[static_cast<std::size_t>(p)][static_cast<std::size_t>(c)];
+      if (a >= tvd::kPhaseAbsent && a < 1.0 - 1e-12) {
+        ++cut;
+        break;
+      }
+    }
+  }
+  double length = 0.0;
+  for (const auto& l : solver.markers().lines())
+    for (std::size_t j = 0; j < l.points.size(); ++j)
+      length += norm(l.points[(j + 1) % l.points.size()] - l.points[j]);
+  return length > 0.0 ? static_cast<double>(cut) * solver.grid().dx / length : 0.0;
+}
+
+double runVariant1(double tEnd, bool markers, cases::InterfaceMode mode) {
   cases::Scene scene = variant1();
   if (!markers) scene.effects.erase(cases::Effect::MaterialInterfaces);
+  scene.tvd.interfaces = mode;
+  std::printf("-- variant 1, %s interfaces\n", std::string(cases::toString(mode)).c_str());
   tvd::TvdSolver solver(scene);
   const Totals t0 = solver.totals();
   const auto c0 = Clock::now();
@@ -141,6 +166,10 @@ void runVariant1(double tEnd, bool markers) {
       solver.grid().nx, solver.grid().nz, markers ? "markers" : "no markers", solver.time(),
       solver.step(), wall, threads(),
       static_cast<double>(solver.workItems()) * solver.step() / wall / threads(), cpu);
+  if (solver.cutCells())
+    std::printf("cut-cell layer: %.2f cells thick (cut cells x dx / marker length)\n",
+                cutLayerCells(solver));
+  return wall;
 }
 
 }  // namespace
@@ -156,11 +185,27 @@ int main(int argc, char** argv) {
   app.add_flag("--variant1", doVariant1, "CASES.md variant 1 (r-z sphere on plate)");
   app.add_option("--t-end", tEnd, "end time of variant 1, us");
   app.add_flag("--no-markers", noMarkers, "variant 1 without marker lines (one fluid)");
+  std::string interfaces = "both";
+  app.add_option("--interfaces", interfaces,
+                 "variant 1's interface mode: whole_cell, conservative, or both side by side "
+                 "(prints the wall-time ratio)")
+      ->check(CLI::IsMember({"whole_cell", "conservative", "both"}));
   CLI11_PARSE(app, argc, argv);
   if (!doThroughput && !doVariant1) doThroughput = doVariant1 = true;
   try {
     if (doThroughput) throughput(h, steps);
-    if (doVariant1) runVariant1(tEnd, !noMarkers);
+    if (doVariant1) {
+      using cases::InterfaceMode;
+      if (interfaces == "both") {
+        const double whole = runVariant1(tEnd, !noMarkers, InterfaceMode::WholeCell);
+        const double cut = runVariant1(tEnd, !noMarkers, InterfaceMode::Conservative);
+        std::printf("conservative / whole_cell wall time: %.2f\n", cut / whole);
+      } else {
+        runVariant1(tEnd, !noMarkers,
+                    interfaces == "conservative" ? InterfaceMode::Conservative
+                                                 : InterfaceMode::WholeCell);
+      }
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;

@@ -134,7 +134,7 @@ void TvdSolver::readCheckpoint(std::istream& in) {
     phases_ = std::move(ph);
     measurePhases();
     phases_.alpha = std::move(saved);  // as saved (orphans included)
-    phases_.volume = phases_.alpha;
+    volumeFresh_ = true;
     orphans_ = static_cast<long>(orphans);
   }
   U_ = std::move(U);

@@ -50,7 +50,7 @@ void TvdSolver::initialiseCut(const cases::Scene& scene) {
       q.E[c] = a * st.rho * (st.e + 0.5 * (st.vx * st.vx + st.vz * st.vz));
     }
   }
-  phases_.volume = phases_.alpha;
+  volumeFresh_ = true;
   phases_.mixture(U_);
 }
 
@@ -120,6 +120,7 @@ double TvdSolver::signalSpeedCut(double* vx, double* vz, long* worstCell) const 
         q.mz[c], q.E[c]));
   }
   if (vx != nullptr) {
+#pragma omp parallel for schedule(static) num_threads(threads_) if (cells >= kParallelCells)
     for (long c = 0; c < cells; ++c) {
       const auto cc = static_cast<std::size_t>(c);
       const double r = U_.rho[cc];

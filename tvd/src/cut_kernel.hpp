@@ -100,6 +100,7 @@ class CutLineSolver {
 
   bool stage(bool first, LineFailure& fail) {
     const int nb = n_ + 4;
+    for (auto& ph : W_.phase) closeFading(ph, first ? ph.q0 : ph.q1, first ? ph.vol0 : ph.vol1);
     for (int p = 0; p < P_; ++p) states(p, first);
     for (int p = 0; p < P_; ++p) {
       PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
@@ -423,6 +424,31 @@ class CutLineSolver {
       ph.dry[f] = 1;
     }
   }
+  // A cell whose working part has faded below kLiveFraction of its fraction (an edge leaving
+  // it) closes before the stage: its content joins the neighbour through its wetter paired
+  // face and its faces are dry for the rest of the step. Left open, the face's aperture (that
+  // of the start of the step) would carry a flux no longer in proportion to what the cell holds.
+  void closeFading(PhaseLine& ph, std::array<std::vector<double>, 4>& q, std::vector<double>& S) {
+    for (int j = 2; j <= n_ + 1; ++j) {
+      if (!ph.present[j] || !(S[j] < kLiveFraction * ph.alpha[j])) continue;
+      if (S[j] == 0.0 && q[kRho][j] == 0.0 && !(ph.ap[j - 1] > 0.0) && !(ph.ap[j] > 0.0))
+        continue;  // closed already
+      const double aR = j + 1 <= n_ + 1 ? W_.area[j] * ph.ap[j] : 0.0;
+      const double aL = j - 1 >= 2 ? W_.area[j - 1] * ph.ap[j - 1] : 0.0;
+      const int t = aR >= aL ? (aR > 0.0 ? j + 1 : -1) : j - 1;
+      if (t < 0) continue;
+      const double vj = 1.0 / W_.invVol[j], vt = 1.0 / W_.invVol[t];
+      if (!(q[kRho][t] * vt + q[kRho][j] * vj > 0.0)) continue;
+      for (int k = 0; k < 4; ++k) {
+        q[k][t] += q[k][j] * vj / vt;
+        q[k][j] = 0.0;
+      }
+      S[t] += S[j] * vj / vt;
+      S[j] = 0.0;
+      for (int f : {j - 1, j}) ph.ap[f] = ph.uL[f] = ph.uR[f] = ph.gm[f] = ph.gp[f] = 0.0;
+    }
+  }
+
   void applyDry(PhaseLine& ph) {
     for (int f = 1; f <= n_ + 1; ++f) {
       if (!ph.dry[f]) continue;

@@ -126,8 +126,9 @@ void Ownership::move(const Conserved& U, double dt) {
 
 void Ownership::remeasure() {
   const GridSpec& g = cells_.grid;
+  // The cut cells take their interface areas from the face apertures: the marker normals of
+  // the whole-cell faces (interfaceNormals) are not needed.
   markers_.rasterize(g, owner_, normal_, fraction_);
-  detail::interfaceNormals(markers_, g, owner_, normal_, normalLength_);
 }
 
 void Ownership::update(Conserved& U, double dt, Budget& booked) {

@@ -65,18 +65,23 @@ void sumByPhase(const double* perObject, std::size_t n, const std::vector<int>& 
     const auto p = static_cast<std::size_t>(objectMaterial[o]);
     double* dst = out[p].data();
     const double* src = perObject + o * n;
+    const long cells = static_cast<long>(n);
     if (objects[p] == 1) {
-      std::copy(src, src + n, dst);
+#pragma omp parallel for schedule(static) if (cells >= kParallelCells)
+      for (long c = 0; c < cells; ++c) dst[c] = src[c];
       continue;
     }
-    for (std::size_t c = 0; c < n; ++c) dst[c] = std::min(dst[c] + src[c], 1.0);
+#pragma omp parallel for schedule(static) if (cells >= kParallelCells)
+    for (long c = 0; c < cells; ++c) dst[c] = std::min(dst[c] + src[c], 1.0);
   }
   if (out.size() < 2) return;
-  for (std::size_t c = 0; c < n; ++c) {
+  const long cells = static_cast<long>(n);
+#pragma omp parallel for schedule(static) if (cells >= kParallelCells)
+  for (long c = 0; c < cells; ++c) {
     double total = 0.0;
-    for (auto& v : out) total += v[c];
+    for (auto& v : out) total += v[static_cast<std::size_t>(c)];
     if (total > 1.0)
-      for (auto& v : out) v[c] /= total;
+      for (auto& v : out) v[static_cast<std::size_t>(c)] /= total;
   }
 }
 
@@ -84,7 +89,9 @@ void sumByPhase(const double* perObject, std::size_t n, const std::vector<int>& 
 void fitApertures(std::vector<double>& a, int phases) {
   if (phases < 2) return;
   const std::size_t n = a.size() / static_cast<std::size_t>(phases);
-  for (std::size_t f = 0; f < n; ++f) {
+  const long faces = static_cast<long>(n);
+#pragma omp parallel for schedule(static) if (faces >= kParallelCells)
+  for (long f = 0; f < faces; ++f) {
     double total = 0.0;
     for (int p = 0; p < phases; ++p) total += a[static_cast<std::size_t>(p) * n + f];
     if (total > 1.0)
@@ -98,9 +105,13 @@ void Phases::measure(const MarkerSet& markers, const std::vector<int>& objectMat
                      const std::vector<double>& fraction) {
   const auto cells = static_cast<std::size_t>(grid.cells());
   sumByPhase(fraction.data(), cells, objectMaterial, alpha);
-  for (auto& a : alpha)
-    for (double& v : a)
-      if (v < kPhaseAbsent) v = 0.0;
+  for (auto& a : alpha) {
+    double* v = a.data();
+    const long n = static_cast<long>(a.size());
+#pragma omp parallel for schedule(static) if (n >= kParallelCells)
+    for (long c = 0; c < n; ++c)
+      if (v[c] < kPhaseAbsent) v[c] = 0.0;
+  }
   measureFaces(markers, objectMaterial);
 }
 
@@ -113,19 +124,42 @@ void Phases::measureFaces(const MarkerSet& markers, const std::vector<int>& obje
 
 void Phases::mixture(Conserved& U) const {
   const auto cells = static_cast<std::size_t>(grid.cells());
-  if (count == 1) {
-    U = q.front();
-    return;
-  }
-  for (auto* v : {&U.rho, &U.mx, &U.mz, &U.E}) v->assign(cells, 0.0);
-  for (const auto& s : q)
-    for (std::size_t c = 0; c < cells; ++c) {
-      U.rho[c] += s.rho[c];
-      U.mx[c] += s.mx[c];
-      U.mz[c] += s.mz[c];
-      U.E[c] += s.E[c];
+  for (auto* v : {&U.rho, &U.mx, &U.mz, &U.E}) v->resize(cells);
+  const long n = static_cast<long>(cells);
+#pragma omp parallel for schedule(static) if (n >= kParallelCells)
+  for (long c = 0; c < n; ++c) {
+    double r = 0.0, mx = 0.0, mz = 0.0, E = 0.0;
+    for (const auto& s : q) {
+      r += s.rho[c];
+      mx += s.mx[c];
+      mz += s.mz[c];
+      E += s.E[c];
     }
+    U.rho[c] = r;
+    U.mx[c] = mx;
+    U.mz[c] = mz;
+    U.E[c] = E;
+  }
 }
+
+namespace {
+
+// The cells (in index order) for which need(c) holds, found by a parallel scan, so that the
+// serial passes of the repair visit only them. Each pass re-checks its condition when it gets to
+// a cell, and no pass can make a cell it did not list need it, so the result is that of a full
+// serial scan.
+template <class Need>
+void findCells(long cells, std::vector<unsigned char>& mask, std::vector<long>& out, Need need) {
+  mask.resize(static_cast<std::size_t>(cells));
+  unsigned char* m = mask.data();
+#pragma omp parallel for schedule(static) if (cells >= kParallelCells)
+  for (long c = 0; c < cells; ++c) m[c] = need(c) ? 1 : 0;
+  out.clear();
+  for (long c = 0; c < cells; ++c)
+    if (m[c]) out.push_back(c);
+}
+
+}  // namespace
 
 // Where the marker lines give a cell more of the phase than the sweeps moved its part to (the
 // working fraction), material comes from the neighbours that the sweeps left with more than the
@@ -140,9 +174,12 @@ void Phases::settle(const CellVolumes& volumes, int p) {
   double* comp[4] = {s.rho.data(), s.mx.data(), s.mz.data(), s.E.data()};
   constexpr double kTiny = 1e-12;
   const int di[8] = {-1, 1, 0, 0, -1, 1, -1, 1}, dk[8] = {0, 0, -1, 1, -1, -1, 1, 1};
-  for (int k = 0; k < nz; ++k)
-    for (int i = 0; i < nx; ++i) {
-      const auto c = static_cast<std::size_t>(static_cast<long>(k) * nx + i);
+  const double* ap = a.data();
+  const double* wp = w.data();
+  findCells(grid.cells(), mask_, todo_, [&](long c) { return ap[c] - wp[c] > kTiny; });
+  for (const long cell : todo_) {
+      const int i = static_cast<int>(cell % nx), k = static_cast<int>(cell / nx);
+      const auto c = static_cast<std::size_t>(cell);
       if (!(a[c] - w[c] > kTiny)) continue;
       const double vc = volumes(static_cast<long>(c));
       for (int n = 0; n < 8 && a[c] - w[c] > kTiny; ++n) {
@@ -173,9 +210,14 @@ long Phases::repair(const CellVolumes& volumes, const std::vector<std::vector<do
     const auto& a0 = oldAlpha[static_cast<std::size_t>(p)];
     Conserved& s = q[static_cast<std::size_t>(p)];
     double* comp[4] = {s.rho.data(), s.mx.data(), s.mz.data(), s.E.data()};
-    for (int k = 0; k < nz; ++k)
-      for (int i = 0; i < nx; ++i) {
-        const long c = static_cast<long>(k) * nx + i;
+    const double* ap = a.data();
+    const double* rp = s.rho.data();
+    findCells(grid.cells(), mask_, todo_, [&](long c) {
+      const bool has = rp[c] != 0.0;
+      return (ap[c] < kPhaseAbsent && has) || (ap[c] >= kPhaseAbsent && (!has || ap[c] < 0.5));
+    });
+    for (const long c : todo_) {
+        const int i = static_cast<int>(c % nx), k = static_cast<int>(c / nx);
         const auto cc = static_cast<std::size_t>(c);
         const bool has = s.rho[cc] != 0.0;
         const bool vacated = a[cc] < kPhaseAbsent && has;

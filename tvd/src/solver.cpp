@@ -236,13 +236,18 @@ double TvdSolver::advance(double tStop) {
   if (cut_) {
     sweepCut(step_ % 2 == 0 ? 0 : 1, dt);
     sweepCut(step_ % 2 == 0 ? 1 : 0, dt);
-    phases_.mixture(U_);
-    ownership_.move(U_, dt);
+    // The markers move with the mixture velocity (one phase: its own state, no copy needed).
+    if (phases_.count == 1) {
+      ownership_.move(phases_.q.front(), dt);
+    } else {
+      phases_.mixture(U_);
+      ownership_.move(U_, dt);
+    }
     std::swap(alphaOld_, phases_.alpha);  // the old fractions, for the repair
     if (phases_.alpha.size() != alphaOld_.size()) phases_.alpha = alphaOld_;
     measurePhases();
     orphans_ += phases_.repair(cellVolumes_, alphaOld_);
-    phases_.volume = phases_.alpha;
+    volumeFresh_ = true;  // the first sweep of the next step starts from alpha
     phases_.mixture(U_);
   } else if (step_ % 2 == 0) {
     sweep(0, dt);

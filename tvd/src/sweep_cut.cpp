@@ -127,13 +127,30 @@ void TvdSolver::sweepCut(int direction, double dt) {
         }
         return aperture1(p, side, gf, xdir, line);
       };
+      // Apertures of the line's own faces, side `side`, as a strided array over the face index
+      // along the line (x faces of row `line`, or z faces of column `line`).
+      const FaceApertures& fa = phases_.faces;
+      const long faceStride = xdir ? 1 : static_cast<long>(fa.nx);
+      auto facesOf = [&](int p, int side) {
+        return xdir ? &fa.x[static_cast<std::size_t>(((2L * p + side) * fa.nz + line) * (fa.nx + 1))]
+                    : &fa.z[static_cast<std::size_t>(((2L * p + side) * (fa.nz + 1)) * fa.nx + line)];
+      };
       for (int p = 0; p < P; ++p) {
         detail::PhaseLine& ph = W.phase[static_cast<std::size_t>(p)];
         const Conserved& Q = phases_.q[static_cast<std::size_t>(p)];
         const double* arrays[4] = {Q.rho.data(), xdir ? Q.mx.data() : Q.mz.data(),
                                    xdir ? Q.mz.data() : Q.mx.data(), Q.E.data()};
+        // The faces across the line bounding each of its cells (side 1 of the lower face, side
+        // 0 of the upper one): the in-cell interface area across the line (planar form).
+        const long crossStride = xdir ? 1 : static_cast<long>(fa.nx + 1);
+        const double* cross[2] = {
+            xdir ? &fa.z[static_cast<std::size_t>(((2L * p + 1) * (fa.nz + 1) + line) * fa.nx)]
+                 : &fa.x[static_cast<std::size_t>(((2L * p + 1) * fa.nz) * (fa.nx + 1) + line)],
+            xdir ? &fa.z[static_cast<std::size_t>(((2L * p) * (fa.nz + 1) + line + 1) * fa.nx)]
+                 : &fa.x[static_cast<std::size_t>(((2L * p) * fa.nz) * (fa.nx + 1) + line + 1)]};
         const double* alpha = phases_.alpha[static_cast<std::size_t>(p)].data();
-        const double* volume = phases_.volume[static_cast<std::size_t>(p)].data();
+        const double* volume =
+            (volumeFresh_ ? phases_.alpha : phases_.volume)[static_cast<std::size_t>(p)].data();
         for (int j = 0; j < n + 4; ++j) {
           int pos = a - 2 + j;
           bool ghost = false;
@@ -149,12 +166,20 @@ void TvdSolver::sweepCut(int direction, double dt) {
           ph.vol0[j] = ph.alpha[j] > 0.0 ? volume[c] : 0.0;
           if (!ghost)
             for (int k = 0; k < 4; ++k) ph.q0[k][j] = arrays[k][c];
-          ph.It[j] = crossInterface(p, xdir, line, pos);
+          ph.It[j] = cross[0][pos * crossStride] - cross[1][pos * crossStride];
         }
+        // Faces inside the domain straight from the aperture arrays; the boundary faces and
+        // those beyond it through `aperture`.
+        const double* face[2] = {facesOf(p, 0), facesOf(p, 1)};
         for (int f = 0; f <= n + 2; ++f) {
           const int gf = a + f - 1;
-          ph.gm[f] = aperture(p, 0, gf);
-          ph.gp[f] = aperture(p, 1, gf);
+          if (gf > 0 && gf < N) {
+            ph.gm[f] = face[0][gf * faceStride];
+            ph.gp[f] = face[1][gf * faceStride];
+          } else {
+            ph.gm[f] = aperture(p, 0, gf);
+            ph.gp[f] = aperture(p, 1, gf);
+          }
         }
       }
       double lineScale;
@@ -211,6 +236,7 @@ void TvdSolver::sweepCut(int direction, double dt) {
       }
     }
   }
+  volumeFresh_ = false;
   const Workspace* failed = nullptr;
   for (const auto& w : work_)
     if (w->failed && (failed == nullptr || w->failedLine < failed->failedLine)) failed = w.get();
@@ -230,12 +256,6 @@ void TvdSolver::sweepCut(int direction, double dt) {
 // Aperture of phase p at face gf of line `line` (0 <= gf <= N) seen from `side`.
 double TvdSolver::aperture1(int p, int side, int gf, bool xdir, int line) const {
   return xdir ? phases_.apertureX(p, side, gf, line) : phases_.apertureZ(p, side, line, gf);
-}
-
-// In-cell interface area of phase p across the line at cell `pos` (planar form, line units).
-double TvdSolver::crossInterface(int p, bool xdir, int line, int pos) const {
-  if (xdir) return phases_.apertureZ(p, 1, pos, line) - phases_.apertureZ(p, 0, pos, line + 1);
-  return phases_.apertureX(p, 1, line, pos) - phases_.apertureX(p, 0, line + 1, pos);
 }
 
 }  // namespace hvi::tvd

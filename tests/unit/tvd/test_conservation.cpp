@@ -70,6 +70,7 @@ void checkFreeBlock(bool markers) {
   s.bodies.push_back(body("block", 0, cases::Rect{-0.52, 0.37, -0.31, 0.44}, {2.79, {}, 0.0}));
   s.bodies.push_back(body("disk", 0, cases::Disk{{0.5, -0.6}, 0.23}, {2.79, {}, 0.0}));
   if (markers) s.effects.insert(cases::Effect::MaterialInterfaces);
+  s.tvd.interfaces = cases::InterfaceMode::WholeCell;  // the study's mode (cut cells: test_cut_cells.cpp)
   TvdSolver solver(s);
   const Conserved before = solver.conserved();
   for (int i = 0; i < 50; ++i) solver.advance(1e9);

@@ -51,6 +51,7 @@ TEST(TvdMarkerFlow, DiskCarriedThroughVacuumReturns) {
   const double R = 0.25;
   s.bodies.push_back(body("disk", 0, cases::Disk{{-0.3, -0.3}, R}, {2.79, {0.3, 0.3}, 0.0}));
   s.effects.insert(cases::Effect::MaterialInterfaces);
+  s.tvd.interfaces = cases::InterfaceMode::WholeCell;  // the study's mode (cut cells: test_cut_cells.cpp)
   TvdSolver solver(s);
   const Totals t0 = solver.totals();
   const double a0 = solver.markers().area(0);
@@ -128,6 +129,7 @@ double slipError(bool twoMaterials) {
                           cases::Polygon{{{-0.7, -0.7}, {0, -1.4}, {1.4, 0}, {0.7, 0.7}}},
                           {rhoB, {}, 0.0}));
   s.effects.insert(cases::Effect::MaterialInterfaces);
+  s.tvd.interfaces = cases::InterfaceMode::WholeCell;  // the study's mode (cut cells: test_cut_cells.cpp)
   TvdSolver solver(s);
   runTo(solver, 0.4);
   // Cells within 0.3 cm of the centre of the contact (0.5 cm from the block corners, which

@@ -60,6 +60,10 @@ struct Phases {
   void settle(const CellVolumes& volumes, int p);
   //! Mixture state: the sum of the phases' q.
   void mixture(Conserved& U) const;
+
+ private:
+  std::vector<unsigned char> mask_;  // repair scratch: cells to visit
+  std::vector<long> todo_;
 };
 
 }  // namespace hvi::tvd

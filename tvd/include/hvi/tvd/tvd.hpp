@@ -94,7 +94,6 @@ class TvdSolver final : public Solver {
   void sweep(int direction, double dt);
   void sweepCut(int direction, double dt);
   [[nodiscard]] double aperture1(int p, int side, int gf, bool xdir, int line) const;
-  [[nodiscard]] double crossInterface(int p, bool xdir, int line, int pos) const;
   void initialiseCut(const cases::Scene& scene);
   void measurePhases();  // phases_ geometry from the marker lines (cut-cell mode)
   double signalSpeedCut(double* vx, double* vz, long* worstCell) const;
@@ -136,6 +135,9 @@ class TvdSolver final : public Solver {
   Phases phases_;        // cut-cell mode: per material fractions, apertures and states
   std::vector<std::vector<double>> alphaOld_;  // cut-cell mode: fractions before the marker step
   long orphans_ = 0;                            // cut-cell mode: cells kept off the geometry
+  // Cut-cell mode: the working fractions equal alpha (the first sweep of a step reads alpha and
+  // writes phases_.volume; every occupied cell lies in its line's window, so all are written).
+  bool volumeFresh_ = true;
 
   // Sweep scratch, one per thread, and the per-line ledger records (summed in line order after
   // the sweep so the totals and the material targets do not depend on the schedule).
