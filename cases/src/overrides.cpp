@@ -6,6 +6,7 @@
 #include <cctype>
 #include <optional>
 #include <span>
+#include <utility>
 #include <variant>
 
 #include "detail/keys.hpp"
@@ -92,30 +93,15 @@ std::vector<Component> parsePath(const Override& ov, std::string_view key) {
 }
 
 std::span<const std::string_view> keysOf(Kind k) {
-  switch (k) {
-    case Kind::Root:
-      return keyNames("root");
-    case Kind::Time:
-      return keyNames("time");
-    case Kind::Domain:
-      return keyNames("domain");
-    case Kind::Boundaries:
-      return keyNames("domain.boundaries");
-    case Kind::Material:
-      return keyNames("materials");
-    case Kind::Body:
-      return keyNames("bodies");
-    case Kind::Sph:
-      return keyNames("sph");
-    case Kind::Tvd:
-      return keyNames("tvd");
-    case Kind::Riemann:
-      return keyNames("riemann");
-    case Kind::Output:
-      return keyNames("output");
-    default:
-      return {};
-  }
+  // The key table of each kind of path node (keyNames' section names).
+  static constexpr std::pair<Kind, std::string_view> kSections[] = {
+      {Kind::Root, "root"},          {Kind::Time, "time"},   {Kind::Domain, "domain"},
+      {Kind::Boundaries, "domain.boundaries"}, {Kind::Material, "materials"},
+      {Kind::Body, "bodies"},        {Kind::Sph, "sph"},     {Kind::Tvd, "tvd"},
+      {Kind::Riemann, "riemann"},    {Kind::Output, "output"}};
+  for (const auto& [kind, section] : kSections)
+    if (kind == k) return keyNames(section);
+  return {};
 }
 
 Kind childKind(Kind parent, std::string_view key) {

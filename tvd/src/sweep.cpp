@@ -9,6 +9,7 @@
 #include "hvi/tvd/limiter.hpp"
 #include "hvi/tvd/tvd.hpp"
 #include "line_kernel.hpp"
+#include "sweep_common.hpp"
 #include "workspace.hpp"
 
 #ifdef _OPENMP
@@ -76,10 +77,6 @@ LineFn pickLineFunction(cases::Limiter limiter, bool radial, bool markers) {
   return pickFor<Minmod>(radial, markers);
 }
 
-Side sideOf(cases::Boundary b) {
-  return b == cases::Boundary::Outflow ? Side::Outflow : Side::Reflect;
-}
-
 // Objects of one material are one medium: across their common boundary the flow is computed
 // as inside one object (mass crosses, the configuration array only labels the cells), so an
 // aluminium striker on an aluminium shield loses no mass at the contact. Only a boundary
@@ -94,14 +91,8 @@ FaceKind faceKind(int ownerL, int ownerR, int matL, int matR) {
 }  // namespace
 
 void TvdSolver::sweep(int direction, double dt) {
-  const bool xdir = direction == 0;
+  const auto [xdir, N, lines, step, rz, radial, h] = detail::sweepShape(grid_, geometry_, direction);
   const int nx = grid_.nx;
-  const int N = xdir ? grid_.nx : grid_.nz;
-  const int lines = xdir ? grid_.nz : grid_.nx;
-  const long step = xdir ? 1 : nx;
-  const bool rz = geometry_ == Geometry::Axisymmetric;
-  const bool radial = xdir && rz;
-  const double h = grid_.dx;
   const LineFn fn = pickLineFunction(params_.limiter, radial, markersOn_);
 
   detail::SweepContext ctx;
@@ -113,8 +104,8 @@ void TvdSolver::sweep(int direction, double dt) {
   ctx.contactIterations = options_.contactIterations;
   ctx.dt = dt;
   ctx.axis = xdir ? 0 : 1;
-  const Side lowSide = sideOf(domain_.boundary[xdir ? 0 : 2]);
-  const Side highSide = sideOf(domain_.boundary[xdir ? 1 : 3]);
+  const Side lowSide = detail::sideOf(domain_.boundary[xdir ? 0 : 2]);
+  const Side highSide = detail::sideOf(domain_.boundary[xdir ? 1 : 3]);
   // The grid arrays in line components (detail::Component): normal and tangential momentum.
   double* arrays[4];
   arrays[detail::kRho] = U_.rho.data();
@@ -189,34 +180,13 @@ void TvdSolver::sweep(int direction, double dt) {
           W.kind[f] = faceKind(W.owner[f], W.owner[f + 1], W.mat[f], W.mat[f + 1]);
       }
       // Geometry (line units): r-z radial lines have face areas r_f and volumes r_j dr.
-      double lineScale;
-      if (radial) {
-        for (int f = 1; f <= n + 1; ++f) W.area[f] = faceX_[static_cast<std::size_t>(a - 1 + f)];
-        for (int j = 2; j <= n + 1; ++j) {
-          const double r = cellX_[static_cast<std::size_t>(a - 2 + j)];
-          W.invVol[j] = 1.0 / (r * h);
-          W.invR[j] = 1.0 / r;
-        }
-        lineScale = 2.0 * std::numbers::pi * h;
-      } else {
-        std::fill(W.area.begin(), W.area.begin() + n + 4, 1.0);
-        std::fill(W.invVol.begin(), W.invVol.begin() + n + 4, 1.0 / h);
-        lineScale = rz ? 2.0 * std::numbers::pi * cellX_[static_cast<std::size_t>(line)] * h : h;
-      }
+      const double lineScale = detail::lineGeometry(radial, rz, h, a, n, line, faceX_, cellX_,
+                                                    W.area, W.invVol, W.invR);
 
       detail::LineBudget lb;
       detail::LineFailure fail;
       if (!fn(W, setup, ctx, lb, fail)) {
-        const int pos = a - 2 + fail.j;
-        const int i = xdir ? pos : line, k = xdir ? line : pos;
-        if (ws.failed && ws.failedLine < line) continue;
-        ws.failed = true;
-        ws.failedLine = line;
-        ws.message = fmt::format(
-            "tvd: step {} ({} sweep, dt = {:.4g} us): cell (i={}, k={}) at x = {:.6g}, z = {:.6g} "
-            "cm: {} (rho = {:.6g} g/cm^3, e = {:.6g} cm^2/us^2)",
-            step_, xdir ? "x" : "z", dt, i, k, grid_.x0 + (i + 0.5) * h, grid_.z0 + (k + 0.5) * h,
-            fail.what, fail.rho, fail.e);
+        ws.fail(line, detail::failureMessage(step_, xdir, dt, a, line, grid_, fail));
         continue;
       }
       for (int j = 2; j <= n + 1; ++j) {
@@ -243,6 +213,12 @@ void TvdSolver::sweep(int direction, double dt) {
       }
     }
   }
+  finishSweep(lines);
+}
+
+// The lowest failed line's report, if any line failed; else the line records summed into the
+// ledger in line order (the totals do not depend on the schedule).
+void TvdSolver::finishSweep(int lines) {
   const Workspace* failed = nullptr;
   for (const auto& w : work_)
     if (w->failed && (failed == nullptr || w->failedLine < failed->failedLine)) failed = w.get();

@@ -10,6 +10,7 @@
 #include "hvi/common/error.hpp"
 #include "hvi/tvd/limiter.hpp"
 #include "hvi/tvd/tvd.hpp"
+#include "sweep_common.hpp"
 #include "workspace.hpp"
 
 #ifdef _OPENMP
@@ -46,21 +47,11 @@ CutFn pickCutFunction(cases::Limiter limiter, bool radial) {
   return pickCutFor<Minmod>(radial);
 }
 
-Side sideOf(cases::Boundary b) {
-  return b == cases::Boundary::Outflow ? Side::Outflow : Side::Reflect;
-}
-
 }  // namespace
 
 void TvdSolver::sweepCut(int direction, double dt) {
-  const bool xdir = direction == 0;
+  const auto [xdir, N, lines, step, rz, radial, h] = detail::sweepShape(grid_, geometry_, direction);
   const int nx = grid_.nx;
-  const int N = xdir ? grid_.nx : grid_.nz;
-  const int lines = xdir ? grid_.nz : grid_.nx;
-  const long step = xdir ? 1 : nx;
-  const bool rz = geometry_ == Geometry::Axisymmetric;
-  const bool radial = xdir && rz;
-  const double h = grid_.dx;
   const CutFn fn = pickCutFunction(params_.limiter, radial);
   const int P = phases_.count;
 
@@ -73,8 +64,8 @@ void TvdSolver::sweepCut(int direction, double dt) {
   ctx.dt = dt;
   ctx.h = h;
   ctx.axis = xdir ? 0 : 1;
-  const Side lowSide = sideOf(domain_.boundary[xdir ? 0 : 2]);
-  const Side highSide = sideOf(domain_.boundary[xdir ? 1 : 3]);
+  const Side lowSide = detail::sideOf(domain_.boundary[xdir ? 0 : 2]);
+  const Side highSide = detail::sideOf(domain_.boundary[xdir ? 1 : 3]);
 
 #pragma omp parallel num_threads(threads_) if (grid_.cells() >= kParallelCells)
   {
@@ -182,34 +173,13 @@ void TvdSolver::sweepCut(int direction, double dt) {
           }
         }
       }
-      double lineScale;
-      if (radial) {
-        for (int f = 1; f <= n + 1; ++f) W.area[f] = faceX_[static_cast<std::size_t>(a - 1 + f)];
-        for (int j = 2; j <= n + 1; ++j) {
-          const double r = cellX_[static_cast<std::size_t>(a - 2 + j)];
-          W.invVol[j] = 1.0 / (r * h);
-          W.invR[j] = 1.0 / r;
-        }
-        lineScale = 2.0 * std::numbers::pi * h;
-      } else {
-        std::fill(W.area.begin(), W.area.begin() + n + 4, 1.0);
-        std::fill(W.invVol.begin(), W.invVol.begin() + n + 4, 1.0 / h);
-        lineScale = rz ? 2.0 * std::numbers::pi * cellX_[static_cast<std::size_t>(line)] * h : h;
-      }
+      const double lineScale = detail::lineGeometry(radial, rz, h, a, n, line, faceX_, cellX_,
+                                                    W.area, W.invVol, W.invR);
 
       detail::LineBudget lb;
       detail::LineFailure fail;
       if (!fn(W, setup, ctx, lb, fail)) {
-        const int pos = a - 2 + fail.j;
-        const int i = xdir ? pos : line, k = xdir ? line : pos;
-        if (ws.failed && ws.failedLine < line) continue;
-        ws.failed = true;
-        ws.failedLine = line;
-        ws.message = fmt::format(
-            "tvd: step {} ({} sweep, dt = {:.4g} us): cell (i={}, k={}) at x = {:.6g}, z = {:.6g} "
-            "cm: {} (rho = {:.6g} g/cm^3, e = {:.6g} cm^2/us^2)",
-            step_, xdir ? "x" : "z", dt, i, k, grid_.x0 + (i + 0.5) * h, grid_.z0 + (k + 0.5) * h,
-            fail.what, fail.rho, fail.e);
+        ws.fail(line, detail::failureMessage(step_, xdir, dt, a, line, grid_, fail));
         continue;
       }
       for (int p = 0; p < P; ++p) {
@@ -237,20 +207,7 @@ void TvdSolver::sweepCut(int direction, double dt) {
     }
   }
   volumeFresh_ = false;
-  const Workspace* failed = nullptr;
-  for (const auto& w : work_)
-    if (w->failed && (failed == nullptr || w->failedLine < failed->failedLine)) failed = w.get();
-  if (failed != nullptr) {
-    const std::string msg = failed->message;
-    for (auto& v : work_) v->failed = false;
-    throw SimulationError(msg);
-  }
-  for (int line = 0; line < lines; ++line) {
-    const LineRecord& rec = lineRecords_[static_cast<std::size_t>(line)];
-    ledger_.boundary += rec.boundary;
-    ledger_.floors += rec.floors;
-    ledger_.outflow += rec.outflow;
-  }
+  finishSweep(lines);
 }
 
 // Aperture of phase p at face gf of line `line` (0 <= gf <= N) seen from `side`.

@@ -3,6 +3,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hvi/tvd/tvd.hpp"
@@ -19,6 +20,13 @@ struct TvdSolver::Workspace {
   int failedLine = 0;  // the lowest failed line this thread saw: the report does not depend on
                        // the schedule
   std::string message;
+  //! Keeps the report of the lowest failed line.
+  void fail(int line, std::string what) {
+    if (failed && failedLine < line) return;
+    failed = true;
+    failedLine = line;
+    message = std::move(what);
+  }
 };
 
 struct TvdSolver::LineRecord {

@@ -93,6 +93,7 @@ class TvdSolver final : public Solver {
   void initialiseState(const cases::Scene& scene);
   void sweep(int direction, double dt);
   void sweepCut(int direction, double dt);
+  void finishSweep(int lines);  // failure report or the line records into the ledger
   [[nodiscard]] double aperture1(int p, int side, int gf, bool xdir, int line) const;
   void initialiseCut(const cases::Scene& scene);
   void measurePhases();  // phases_ geometry from the marker lines (cut-cell mode)

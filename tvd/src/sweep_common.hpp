@@ -1,0 +1,72 @@
+//! @file What the whole-cell and the cut-cell sweep drivers share: line geometry, the report
+//! of a failed cell, the boundary sides.
+#pragma once
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "hvi/cases/scene.hpp"
+#include "hvi/common/geometry.hpp"
+#include "hvi/common/snapshot.hpp"
+#include "line_work.hpp"
+
+namespace hvi::tvd::detail {
+
+//! The lines of one sweep direction (0: x, 1: z) of a grid.
+struct SweepShape {
+  bool xdir;      //!< lines along x
+  int N;          //!< cells per line
+  int lines;      //!< lines
+  long step;      //!< cell index stride along a line
+  bool rz;        //!< r-z geometry
+  bool radial;    //!< radial lines of an r-z grid (areas r_f, hoop source)
+  double h;       //!< cell size
+};
+inline SweepShape sweepShape(const GridSpec& g, Geometry geometry, int direction) {
+  const bool xdir = direction == 0, rz = geometry == Geometry::Axisymmetric;
+  return {xdir, xdir ? g.nx : g.nz, xdir ? g.nz : g.nx, xdir ? 1L : static_cast<long>(g.nx),
+          rz, xdir && rz, g.dx};
+}
+
+inline Side sideOf(cases::Boundary b) {
+  return b == cases::Boundary::Outflow ? Side::Outflow : Side::Reflect;
+}
+
+//! Geometry of a loaded line in line units (cells a .. a+n-1 at buffer 2 .. n+1): r-z radial
+//! lines have face areas r_f and volumes r_j dr, every other line 1 and dr. Returns the factor
+//! from line units to the solver's (planar per cm of depth, r-z with 2 pi r).
+inline double lineGeometry(bool radial, bool rz, double h, int a, int n, int line,
+                           const std::vector<double>& faceX, const std::vector<double>& cellX,
+                           std::vector<double>& area, std::vector<double>& invVol,
+                           std::vector<double>& invR) {
+  if (radial) {
+    for (int f = 1; f <= n + 1; ++f) area[f] = faceX[static_cast<std::size_t>(a - 1 + f)];
+    for (int j = 2; j <= n + 1; ++j) {
+      const double r = cellX[static_cast<std::size_t>(a - 2 + j)];
+      invVol[j] = 1.0 / (r * h);
+      invR[j] = 1.0 / r;
+    }
+    return 2.0 * std::numbers::pi * h;
+  }
+  std::fill(area.begin(), area.begin() + n + 4, 1.0);
+  std::fill(invVol.begin(), invVol.begin() + n + 4, 1.0 / h);
+  return rz ? 2.0 * std::numbers::pi * cellX[static_cast<std::size_t>(line)] * h : h;
+}
+
+//! The report of a cell the line kernel could not keep physical (buffer index fail.j of a
+//! line loaded from cell a).
+inline std::string failureMessage(long step, bool xdir, double dt, int a, int line,
+                                  const GridSpec& g, const LineFailure& fail) {
+  const int pos = a - 2 + fail.j;
+  const int i = xdir ? pos : line, k = xdir ? line : pos;
+  return fmt::format(
+      "tvd: step {} ({} sweep, dt = {:.4g} us): cell (i={}, k={}) at x = {:.6g}, z = {:.6g} "
+      "cm: {} (rho = {:.6g} g/cm^3, e = {:.6g} cm^2/us^2)",
+      step, xdir ? "x" : "z", dt, i, k, g.x0 + (i + 0.5) * g.dx, g.z0 + (k + 0.5) * g.dz,
+      fail.what, fail.rho, fail.e);
+}
+
+}  // namespace hvi::tvd::detail
