@@ -41,8 +41,9 @@ fs::path outDir() {
 // The scene files are written for SPH; TVD gets its own effects (the parser rejects effects a
 // solver does not support, so they are replaced, not added).
 std::vector<std::string> solverOverrides(const std::string& solver) {
-  if (solver == "tvd")
-    return {"solver=tvd", R"(effects=["tension_cutoff", "material_interfaces"])"};
+  if (solver == "tvd")  // the study's whole-cell interfaces unless a variant overrides them
+    return {"solver=tvd", R"(effects=["tension_cutoff", "material_interfaces"])",
+            R"(tvd.interfaces="whole_cell")"};
   return {"solver=" + solver};
 }
 
