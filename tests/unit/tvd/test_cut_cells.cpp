@@ -152,7 +152,7 @@ TEST(TvdCutCells, TwoMaterialContactSlips) {
 // for it): the faces' apertures are those of the start of each step, so where a curved outline
 // slides along a face the swept volume is off by half the aperture change, the repair moves
 // that volume between neighbours, and what it cannot match shows as density noise in the
-// outline cells (measured +-7 % after 2 us) that sends waves inward. Printed, not asserted.
+// outline cells (measured up to 3 % after 1 us) that sends waves inward. Printed, not asserted.
 // An axis-aligned block is exact (TvdCutCells.BlockCarriedExactly).
 TEST(TvdCutCells, DiskCarriedTwentyDiameters) {
   const double h = 0.05, R = 0.25, u = 0.5;
