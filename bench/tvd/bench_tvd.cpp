@@ -5,12 +5,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <string>
 #include <ctime>
+#include <string>
 
+#include "hvi/cases/names.hpp"
 #include "hvi/common/units.hpp"
 #include "hvi/eos/eos.hpp"
-#include "hvi/cases/names.hpp"
 #include "hvi/tvd/tvd.hpp"
 
 #ifdef _OPENMP
@@ -201,9 +201,9 @@ int main(int argc, char** argv) {
         const double cut = runVariant1(tEnd, !noMarkers, InterfaceMode::Conservative);
         std::printf("conservative / whole_cell wall time: %.2f\n", cut / whole);
       } else {
-        runVariant1(tEnd, !noMarkers,
-                    interfaces == "conservative" ? InterfaceMode::Conservative
-                                                 : InterfaceMode::WholeCell);
+        runVariant1(
+            tEnd, !noMarkers,
+            interfaces == "conservative" ? InterfaceMode::Conservative : InterfaceMode::WholeCell);
       }
     }
   } catch (const std::exception& e) {

@@ -36,6 +36,7 @@ class CutLineSolver {
   bool run(LineFailure& fail) {
     prepare();
     for (auto& ph : W_.phase) {
+      if (!ph.active) continue;
       fillPhaseGhosts(ph.q0);
       fillVolumeGhosts(ph.vol0);
       for (int k = 0; k < 4; ++k)
@@ -44,6 +45,7 @@ class CutLineSolver {
     }
     if (!stage(true, fail)) return false;
     for (auto& ph : W_.phase) {
+      if (!ph.active) continue;
       for (int k = 0; k < 4; ++k)
         std::copy(ph.w[k].begin() + 2, ph.w[k].begin() + n_ + 2, ph.q1[k].begin() + 2);
       std::copy(ph.volW.begin() + 2, ph.volW.begin() + n_ + 2, ph.vol1.begin() + 2);
@@ -53,6 +55,7 @@ class CutLineSolver {
     if (!stage(false, fail)) return false;
     for (int p = 0; p < P_; ++p) {
       PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
+      if (!ph.active) continue;
       for (int k = 0; k < 4; ++k)
         for (int j = 2; j < n_ + 2; ++j) ph.q0[k][j] = 0.5 * (ph.q0[k][j] + ph.w[k][j]);
       for (int j = 2; j < n_ + 2; ++j) ph.vol0[j] = 0.5 * (ph.vol0[j] + ph.volW[j]);
@@ -65,7 +68,16 @@ class CutLineSolver {
   // Paired and unpaired apertures of every face (fixed during the step).
   void prepare() {
     for (auto& ph : W_.phase) {
-      for (int j = 0; j < n_ + 4; ++j) ph.present[j] = ph.alpha[j] >= kPhaseAbsent ? 1 : 0;
+      if (!ph.active) continue;
+      ph.lo = n_ + 4;
+      ph.hi = -1;
+      for (int j = 0; j < n_ + 4; ++j) {
+        ph.present[j] = ph.alpha[j] >= kPhaseAbsent ? 1 : 0;
+        if (ph.present[j]) {
+          ph.lo = std::min(ph.lo, j);
+          ph.hi = j;
+        }
+      }
       for (int f = 0; f <= n_ + 2; ++f) {
         const bool l = ph.present[f] != 0, r = ph.present[f + 1] != 0;
         ph.ap[f] = l && r ? std::min(ph.gm[f], ph.gp[f]) : 0.0;
@@ -100,11 +112,16 @@ class CutLineSolver {
 
   bool stage(bool first, LineFailure& fail) {
     const int nb = n_ + 4;
-    for (auto& ph : W_.phase) closeFading(ph, first ? ph.q0 : ph.q1, first ? ph.vol0 : ph.vol1);
-    for (int p = 0; p < P_; ++p) states(p, first);
+    for (auto& ph : W_.phase)
+      if (ph.active) closeFading(ph, first ? ph.q0 : ph.q1, first ? ph.vol0 : ph.vol1);
+    for (int p = 0; p < P_; ++p)
+      if (W_.phase[static_cast<std::size_t>(p)].active) states(p, first);
     for (int p = 0; p < P_; ++p) {
       PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
-      for (int f = 0; f <= n_ + 2; ++f) {
+      if (!ph.active) continue;
+      // Only the span the phase occupies (and the faces around it): every face flux below
+      // needs both its cells to hold the phase, so nothing outside is read.
+      for (int f = std::max(0, ph.lo - 1); f <= std::min(n_ + 2, ph.hi); ++f) {
         // A face carries a flux only between two cells that hold some of the phase: a cell the
         // positivity limiter emptied has no state to average with (its c would be 0).
         if (!(ph.ap[f] > 0.0) || !(ph.cs[f].rho > 0.0) || !(ph.cs[f + 1].rho > 0.0)) {
@@ -115,7 +132,7 @@ class CutLineSolver {
         for (int k = 0; k < 4; ++k) dU[k] = ph.U[k][f + 1] - ph.U[k][f];
         ph.fe[f] = faceEigen(ph.cs[f], ph.cs[f + 1], dU, ph.sqrtRho[f], ph.sqrtRho[f + 1]);
       }
-      for (int j = 1; j <= n_ + 2; ++j)
+      for (int j = std::max(1, ph.lo); j <= std::min(n_ + 2, ph.hi); ++j)
         for (int l = 0; l < kFields; ++l)
           ph.g[j][l] = (l == 0 || l == 3) ? Lim::g(ph.fe[j - 1].alpha[l], ph.fe[j].alpha[l])
                                           : Superbee::g(ph.fe[j - 1].alpha[l], ph.fe[j].alpha[l]);
@@ -140,6 +157,7 @@ class CutLineSolver {
     exchange();
     for (int p = 0; p < P_; ++p) {
       PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
+      if (!ph.active) continue;
       const auto& V = first ? ph.q0 : ph.q1;
       const auto& S = first ? ph.vol0 : ph.vol1;
       for (int j = 2; j <= n_ + 1; ++j) update(ph, V, S, j);
@@ -160,7 +178,8 @@ class CutLineSolver {
     const int nb = n_ + 4;
     std::visit(
         [&](const auto& eos) {
-          for (int j = 0; j < nb; ++j) {
+          // The occupied span and one cell either side (the faces around it check them).
+          for (int j = std::max(0, ph.lo - 1); j <= std::min(nb - 1, ph.hi + 1); ++j) {
             if (!ph.present[j] || !(S[j] > kPhaseAbsent * ph.alpha[j])) {
               ph.cs[j] = CellState{};
               ph.sqrtRho[j] = 0.0;
@@ -204,17 +223,16 @@ class CutLineSolver {
     for (int f = 1; f <= n_ + 1; ++f) {
       for (int p = 0; p < P_; ++p) {
         PhaseLine& a = W_.phase[static_cast<std::size_t>(p)];
-        if (!(a.uL[f] > 0.0)) continue;
+        if (!a.active || !(a.uL[f] > 0.0)) continue;
         double left = a.uL[f];
         for (int q = 0; q < P_ && left > 0.0; ++q) {
           if (q == p) continue;
           PhaseLine& b = W_.phase[static_cast<std::size_t>(q)];
-          if (!(b.uR[f] > 0.0)) continue;
+          if (!b.active || !(b.uR[f] > 0.0)) continue;
           const double s = std::min(left, b.uR[f]) * W_.area[f];
           left -= s / W_.area[f];
           if (!(a.cs[f].rho > 0.0) || !(b.cs[f + 1].rho > 0.0)) continue;
-          const ContactStar st =
-              contactStar(a.cs[f], b.cs[f + 1], 1.0, 0.0, C_.contactIterations);
+          const ContactStar st = contactStar(a.cs[f], b.cs[f + 1], 1.0, 0.0, C_.contactIterations);
           if (!(st.p > 0.0)) continue;
           a.ex[kMn][f] -= st.p * s;
           a.ex[kE][f] -= st.p * st.uL * s;
@@ -237,10 +255,10 @@ class CutLineSolver {
       };
       for (int p = 0; p < P_; ++p) {
         PhaseLine& a = W_.phase[static_cast<std::size_t>(p)];
-        if (!a.present[j] || !(a.cs[j].rho > 0.0)) continue;
+        if (!a.active || !a.present[j] || !(a.cs[j].rho > 0.0)) continue;
         for (int q = p + 1; q < P_; ++q) {
           PhaseLine& b = W_.phase[static_cast<std::size_t>(q)];
-          if (!b.present[j] || !(b.cs[j].rho > 0.0)) continue;
+          if (!b.active || !b.present[j] || !(b.cs[j].rho > 0.0)) continue;
           const double sn = shared(interfacePlanar(a, j), interfacePlanar(b, j));
           const double st = shared(a.It[j], b.It[j]);
           const double len = std::sqrt(sn * sn + st * st);
@@ -302,8 +320,8 @@ class CutLineSolver {
   // floored (booked). Mass is never removed: a positivity flux limiter keeps every cell's mass
   // (as judged) from going below zero, and a live cell that still cannot be kept physical
   // stops the run.
-  bool positivity(int p, const std::array<std::vector<double>, 4>& V,
-                  const std::vector<double>& S, bool first, LineFailure& fail) {
+  bool positivity(int p, const std::array<std::vector<double>, 4>& V, const std::vector<double>& S,
+                  bool first, LineFailure& fail) {
     PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
     auto physicalAt = [&](int j) {
       return physical(judged(ph, kRho, j, first), judged(ph, kMn, j, first),
@@ -402,9 +420,11 @@ class CutLineSolver {
   void absorbFading(PhaseLine& ph) {
     for (int j = 2; j <= n_ + 1; ++j) {
       if (!ph.present[j] || !(ph.volW[j] < 0.0)) continue;
-      const double outR = ph.ap[j] > 0.0 && j + 1 <= n_ + 1 ? W_.area[j] * ph.ap[j] * ph.flux[j][kRho] : 0.0;
-      const double outL =
-          ph.ap[j - 1] > 0.0 && j - 1 >= 2 ? -W_.area[j - 1] * ph.ap[j - 1] * ph.flux[j - 1][kRho] : 0.0;
+      const double outR =
+          ph.ap[j] > 0.0 && j + 1 <= n_ + 1 ? W_.area[j] * ph.ap[j] * ph.flux[j][kRho] : 0.0;
+      const double outL = ph.ap[j - 1] > 0.0 && j - 1 >= 2
+                              ? -W_.area[j - 1] * ph.ap[j - 1] * ph.flux[j - 1][kRho]
+                              : 0.0;
       int t = -1, f = -1;
       if (outR > 0.0 && outR >= outL) {
         t = j + 1;
@@ -469,9 +489,12 @@ class CutLineSolver {
       if (!(vol < kMergeFraction * face) && ph.w[kRho][j] > 0.0) continue;
       const double al = W_.area[j - 1] * ph.ap[j - 1], ar = W_.area[j] * ph.ap[j];
       int t = -1;
-      if (ar > 0.0 && ar >= al && j + 1 <= n_ + 1) t = j + 1;
-      else if (al > 0.0 && j - 1 >= 2) t = j - 1;
-      else if (ar > 0.0 && j + 1 <= n_ + 1) t = j + 1;
+      if (ar > 0.0 && ar >= al && j + 1 <= n_ + 1)
+        t = j + 1;
+      else if (al > 0.0 && j - 1 >= 2)
+        t = j - 1;
+      else if (ar > 0.0 && j + 1 <= n_ + 1)
+        t = j + 1;
       if (t < 0) continue;
       const double vj = 1.0 / W_.invVol[j], vt = 1.0 / W_.invVol[t];
       // Pooling a deficit would only spread it: the positivity limiter treats it first.

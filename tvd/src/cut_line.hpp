@@ -13,6 +13,8 @@ namespace hvi::tvd::detail {
 //! components (kRho, kMn, kMt, kE); U = q / alpha its own state per unit phase volume.
 struct PhaseLine {
   explicit PhaseLine(int capacity);
+  bool active = false;  // the phase occupies some cell of the loaded line (else it is skipped)
+  int lo = 0, hi = -1;  // first and last buffer cell the phase occupies (prepare)
   std::array<std::vector<double>, 4> q0, q1, w, ex;  // start, stage input, stage result, exchange
   std::array<std::vector<double>, 4> U;              // state of the stage input, per phase volume
   std::vector<double> alpha;  // volume fraction per cell from the marker lines (step start)

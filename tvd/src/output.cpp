@@ -47,7 +47,7 @@ Snapshot TvdSolver::snapshot() const {
             v.data[2 * cc + 1] = st.w;
             e.data[cc] = st.e;
             if (object >= 0) {
-              mat.data[cc] = id;
+              mat.data[cc] = sceneMaterialOf_[static_cast<std::size_t>(id)];
               obj.data[cc] = object;
             }
           }
@@ -61,7 +61,7 @@ Snapshot TvdSolver::snapshot() const {
     for (std::size_t c = 0; c < n; ++c) {
       if (mat.data[c] < 0.0) continue;
       const eos::PhaseState st =
-          eos::phaseState(materials_[static_cast<std::size_t>(mat.data[c])].eos, e.data[c]);
+          eos::phaseState(sceneMaterials_[static_cast<std::size_t>(mat.data[c])].eos, e.data[c]);
       frac.data[c] = st.vapourFraction;
       phase.data[c] = static_cast<double>(static_cast<int>(st.phase));
     }
@@ -71,7 +71,7 @@ Snapshot TvdSolver::snapshot() const {
     s.fields = {std::move(rho), std::move(p),   std::move(v),
                 std::move(e),   std::move(mat), std::move(obj)};
   }
-  for (const auto& m : materials_) s.materialNames.push_back(m.name);
+  for (const auto& m : sceneMaterials_) s.materialNames.push_back(m.name);
   if (markersOn_) {
     s.objectNames = bodyNames_;
     s.markers = ownership_.markers().polylines();

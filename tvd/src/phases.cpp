@@ -90,12 +90,26 @@ void fitApertures(std::vector<double>& a, int phases) {
   if (phases < 2) return;
   const std::size_t n = a.size() / static_cast<std::size_t>(phases);
   const long faces = static_cast<long>(n);
+  double* base = a.data();
+  if (phases == 2) {  // the common case, two contiguous streams
+    double* a0 = base;
+    double* a1 = base + n;
+#pragma omp parallel for schedule(static) if (faces >= kParallelCells)
+    for (long f = 0; f < faces; ++f) {
+      const double total = a0[f] + a1[f];
+      if (total > 1.0) {
+        a0[f] /= total;
+        a1[f] /= total;
+      }
+    }
+    return;
+  }
 #pragma omp parallel for schedule(static) if (faces >= kParallelCells)
   for (long f = 0; f < faces; ++f) {
     double total = 0.0;
-    for (int p = 0; p < phases; ++p) total += a[static_cast<std::size_t>(p) * n + f];
+    for (int p = 0; p < phases; ++p) total += base[static_cast<std::size_t>(p) * n + f];
     if (total > 1.0)
-      for (int p = 0; p < phases; ++p) a[static_cast<std::size_t>(p) * n + f] /= total;
+      for (int p = 0; p < phases; ++p) base[static_cast<std::size_t>(p) * n + f] /= total;
   }
 }
 
@@ -126,19 +140,24 @@ void Phases::mixture(Conserved& U) const {
   const auto cells = static_cast<std::size_t>(grid.cells());
   for (auto* v : {&U.rho, &U.mx, &U.mz, &U.E}) v->resize(cells);
   const long n = static_cast<long>(cells);
+  double* out[4] = {U.rho.data(), U.mx.data(), U.mz.data(), U.E.data()};
+  for (int k = 0; k < 4; ++k) {
+    // Component by component, phase by phase: contiguous streams (the phases are few).
+    double* o = out[k];
+    for (int p = 0; p < count; ++p) {
+      const Conserved& s = q[static_cast<std::size_t>(p)];
+      const double* in = k == 0   ? s.rho.data()
+                         : k == 1 ? s.mx.data()
+                         : k == 2 ? s.mz.data()
+                                  : s.E.data();
+      if (p == 0) {
 #pragma omp parallel for schedule(static) if (n >= kParallelCells)
-  for (long c = 0; c < n; ++c) {
-    double r = 0.0, mx = 0.0, mz = 0.0, E = 0.0;
-    for (const auto& s : q) {
-      r += s.rho[c];
-      mx += s.mx[c];
-      mz += s.mz[c];
-      E += s.E[c];
+        for (long c = 0; c < n; ++c) o[c] = in[c];
+      } else {
+#pragma omp parallel for schedule(static) if (n >= kParallelCells)
+        for (long c = 0; c < n; ++c) o[c] += in[c];
+      }
     }
-    U.rho[c] = r;
-    U.mx[c] = mx;
-    U.mz[c] = mz;
-    U.E[c] = E;
   }
 }
 
@@ -194,27 +213,27 @@ void Phases::settle(const CellVolumes& volumes, int p) {
   const double* wp = w.data();
   findCells(grid.cells(), mask_, todo_, [&](long c) { return ap[c] - wp[c] > kTiny; });
   for (const long cell : todo_) {
-      const int i = static_cast<int>(cell % nx), k = static_cast<int>(cell / nx);
-      const auto c = static_cast<std::size_t>(cell);
-      if (!(a[c] - w[c] > kTiny)) continue;
-      const double vc = volumes(static_cast<long>(c));
-      for (int n = 0; n < kOffsets && a[c] - w[c] > kTiny; ++n) {
-        const int ii = i + order[2 * n], kk = k + order[2 * n + 1];
-        if (ii < 0 || ii >= nx || kk < 0 || kk >= nz) continue;
-        const auto d = static_cast<std::size_t>(static_cast<long>(kk) * nx + ii);
-        if (!(w[d] - a[d] > kTiny) || !(s.rho[d] > 0.0) || !(w[d] > 0.0)) continue;
-        const double vd = volumes(static_cast<long>(d));
-        const double take = std::min((a[c] - w[c]) * vc, (w[d] - a[d]) * vd);  // volume
-        const double f = take / (w[d] * vd);  // share of the donor's part moved
-        for (double* v : comp) {
-          const double moved = f * v[d] * vd;
-          v[c] += moved / vc;
-          v[d] -= moved / vd;
-        }
-        w[c] += take / vc;
-        w[d] -= take / vd;
+    const int i = static_cast<int>(cell % nx), k = static_cast<int>(cell / nx);
+    const auto c = static_cast<std::size_t>(cell);
+    if (!(a[c] - w[c] > kTiny)) continue;
+    const double vc = volumes(static_cast<long>(c));
+    for (int n = 0; n < kOffsets && a[c] - w[c] > kTiny; ++n) {
+      const int ii = i + order[2 * n], kk = k + order[2 * n + 1];
+      if (ii < 0 || ii >= nx || kk < 0 || kk >= nz) continue;
+      const auto d = static_cast<std::size_t>(static_cast<long>(kk) * nx + ii);
+      if (!(w[d] - a[d] > kTiny) || !(s.rho[d] > 0.0) || !(w[d] > 0.0)) continue;
+      const double vd = volumes(static_cast<long>(d));
+      const double take = std::min((a[c] - w[c]) * vc, (w[d] - a[d]) * vd);  // volume
+      const double f = take / (w[d] * vd);  // share of the donor's part moved
+      for (double* v : comp) {
+        const double moved = f * v[d] * vd;
+        v[c] += moved / vc;
+        v[d] -= moved / vd;
       }
+      w[c] += take / vc;
+      w[d] -= take / vd;
     }
+  }
 }
 
 long Phases::repair(const CellVolumes& volumes, const std::vector<std::vector<double>>& oldAlpha) {
@@ -233,47 +252,47 @@ long Phases::repair(const CellVolumes& volumes, const std::vector<std::vector<do
       return (ap[c] < kPhaseAbsent && has) || (ap[c] >= kPhaseAbsent && (!has || ap[c] < 0.5));
     });
     for (const long c : todo_) {
-        const int i = static_cast<int>(c % nx), k = static_cast<int>(c / nx);
-        const auto cc = static_cast<std::size_t>(c);
-        const bool has = s.rho[cc] != 0.0;
-        const bool vacated = a[cc] < kPhaseAbsent && has;
-        const bool fresh = a[cc] >= kPhaseAbsent && !has;
-        const bool small = a[cc] >= kPhaseAbsent && a[cc] < 0.5 && has;
-        if (!vacated && !fresh && !small) continue;
-        // The neighbour of this phase with the largest fraction (and material in it), within
-        // one ring, else two.
-        long best = -1;
-        double bestA = a[cc];
-        for (int reach = 1; reach <= 2 && best < 0; ++reach)
-          for (int dk = -reach; dk <= reach; ++dk)
-            for (int di = -reach; di <= reach; ++di) {
-              const int ii = i + di, kk = k + dk;
-              if ((di == 0 && dk == 0) || ii < 0 || ii >= nx || kk < 0 || kk >= nz) continue;
-              const auto d = static_cast<std::size_t>(static_cast<long>(kk) * nx + ii);
-              if (a[d] > bestA && s.rho[d] > 0.0) {
-                bestA = a[d];
-                best = static_cast<long>(d);
-              }
+      const int i = static_cast<int>(c % nx), k = static_cast<int>(c / nx);
+      const auto cc = static_cast<std::size_t>(c);
+      const bool has = s.rho[cc] != 0.0;
+      const bool vacated = a[cc] < kPhaseAbsent && has;
+      const bool fresh = a[cc] >= kPhaseAbsent && !has;
+      const bool small = a[cc] >= kPhaseAbsent && a[cc] < 0.5 && has;
+      if (!vacated && !fresh && !small) continue;
+      // The neighbour of this phase with the largest fraction (and material in it), within
+      // one ring, else two.
+      long best = -1;
+      double bestA = a[cc];
+      for (int reach = 1; reach <= 2 && best < 0; ++reach)
+        for (int dk = -reach; dk <= reach; ++dk)
+          for (int di = -reach; di <= reach; ++di) {
+            const int ii = i + di, kk = k + dk;
+            if ((di == 0 && dk == 0) || ii < 0 || ii >= nx || kk < 0 || kk >= nz) continue;
+            const auto d = static_cast<std::size_t>(static_cast<long>(kk) * nx + ii);
+            if (a[d] > bestA && s.rho[d] > 0.0) {
+              bestA = a[d];
+              best = static_cast<long>(d);
             }
-        if (best < 0) {
-          if (vacated) {  // nowhere to go: the material keeps its last volume here
-            a[cc] = a0[cc] >= kPhaseAbsent ? a0[cc] : kPhaseAbsent;
-            ++orphans;
-          } else if (fresh) {
-            a[cc] = 0.0;  // a sliver the phase has no material near: not occupied
           }
-          continue;
+      if (best < 0) {
+        if (vacated) {  // nowhere to go: the material keeps its last volume here
+          a[cc] = a0[cc] >= kPhaseAbsent ? a0[cc] : kPhaseAbsent;
+          ++orphans;
+        } else if (fresh) {
+          a[cc] = 0.0;  // a sliver the phase has no material near: not occupied
         }
-        const auto d = static_cast<std::size_t>(best);
-        const double vc = volumes(c), vd = volumes(best);
-        const double pooled = a[cc] * vc + a[d] * vd;
-        for (double* v : comp) {
-          const double total = v[cc] * vc + v[d] * vd;
-          const double u = total / pooled;
-          v[cc] = a[cc] * u;
-          v[d] = a[d] * u;
-        }
+        continue;
       }
+      const auto d = static_cast<std::size_t>(best);
+      const double vc = volumes(c), vd = volumes(best);
+      const double pooled = a[cc] * vc + a[d] * vd;
+      for (double* v : comp) {
+        const double total = v[cc] * vc + v[d] * vd;
+        const double u = total / pooled;
+        v[cc] = a[cc] * u;
+        v[d] = a[d] * u;
+      }
+    }
   }
   return orphans;
 }

@@ -24,10 +24,7 @@ std::unique_ptr<Solver> createSolver(const cases::Scene& scene) {
 TvdSolver::~TvdSolver() = default;
 
 TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
-    : geometry_(scene.geometry),
-      domain_(scene.domain),
-      params_(scene.tvd),
-      options_(options) {
+    : geometry_(scene.geometry), domain_(scene.domain), params_(scene.tvd), options_(options) {
   setUpGrid(scene);
   setUpMaterials(scene);
 #ifdef _OPENMP
@@ -35,13 +32,14 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
 #else
   threads_ = 1;
 #endif
-  cut_ = markersOn_ && (options_.cutCells || params_.interfaces == cases::InterfaceMode::Conservative);
+  cut_ =
+      markersOn_ && (options_.cutCells || params_.interfaces == cases::InterfaceMode::Conservative);
   const int lineCells = std::max(grid_.nx, grid_.nz);
   for (int t = 0; t < threads_; ++t) {
     work_.push_back(std::make_unique<Workspace>(lineCells));
     if (cut_)
-      work_.back()->cut = std::make_unique<detail::CutLineWork>(
-          lineCells, static_cast<int>(materials_.size()));
+      work_.back()->cut =
+          std::make_unique<detail::CutLineWork>(lineCells, static_cast<int>(materials_.size()));
   }
   lineRecords_.resize(static_cast<std::size_t>(lineCells));
   time_ = scene.tStart;
@@ -119,6 +117,21 @@ void TvdSolver::setUpMaterials(const cases::Scene& scene) {
     const double rho0 = materials_[static_cast<std::size_t>(b.material)].rho0();
     bodyStates_.push_back(
         {b.density > 0.0 ? b.density : rho0, b.velocity.x, b.velocity.z, b.specificEnergy});
+  }
+  sceneMaterials_ = materials_;
+  sceneMaterialOf_.clear();
+  for (std::size_t m = 0; m < materials_.size(); ++m)
+    sceneMaterialOf_.push_back(static_cast<int>(m));
+  if (scene.has(cases::Effect::MaterialInterfaces) &&
+      (options_.cutCells || params_.interfaces == cases::InterfaceMode::Conservative)) {
+    // One phase per body (tvd.hpp, materials_).
+    materials_.clear();
+    sceneMaterialOf_.clear();
+    for (std::size_t o = 0; o < objectMaterial_.size(); ++o) {
+      materials_.push_back(sceneMaterials_[static_cast<std::size_t>(objectMaterial_[o])]);
+      sceneMaterialOf_.push_back(objectMaterial_[o]);
+      objectMaterial_[o] = static_cast<int>(o);
+    }
   }
   for (const auto& m : materials_) {
     rhoCut_.push_back(params_.vacuumDensity * m.rho0());
@@ -203,8 +216,8 @@ double TvdSolver::signalSpeedPass(double* vx, double* vz, long* worstCell) const
 }
 
 double TvdSolver::stableTimeStep() const {
-  const double s = cut_ ? signalSpeedCut(nullptr, nullptr, nullptr)
-                        : signalSpeedPass(nullptr, nullptr, nullptr);
+  const double s =
+      cut_ ? signalSpeedCut(nullptr, nullptr, nullptr) : signalSpeedPass(nullptr, nullptr, nullptr);
   return s > 0.0 ? params_.cfl * grid_.dx / s : std::numeric_limits<double>::infinity();
 }
 

@@ -91,7 +91,8 @@ FaceKind faceKind(int ownerL, int ownerR, int matL, int matR) {
 }  // namespace
 
 void TvdSolver::sweep(int direction, double dt) {
-  const auto [xdir, N, lines, step, rz, radial, h] = detail::sweepShape(grid_, geometry_, direction);
+  const auto [xdir, N, lines, step, rz, radial, h] =
+      detail::sweepShape(grid_, geometry_, direction);
   const int nx = grid_.nx;
   const LineFn fn = pickLineFunction(params_.limiter, radial, markersOn_);
 
@@ -180,8 +181,8 @@ void TvdSolver::sweep(int direction, double dt) {
           W.kind[f] = faceKind(W.owner[f], W.owner[f + 1], W.mat[f], W.mat[f + 1]);
       }
       // Geometry (line units): r-z radial lines have face areas r_f and volumes r_j dr.
-      const double lineScale = detail::lineGeometry(radial, rz, h, a, n, line, faceX_, cellX_,
-                                                    W.area, W.invVol, W.invR);
+      const double lineScale =
+          detail::lineGeometry(radial, rz, h, a, n, line, faceX_, cellX_, W.area, W.invVol, W.invR);
 
       detail::LineBudget lb;
       detail::LineFailure fail;
@@ -234,7 +235,8 @@ void TvdSolver::finishSweep(int lines) {
     ledger_.floors += rec.floors;
     ledger_.outflow += rec.outflow;
     for (int e = 0; e < 2; ++e)
-      if (rec.edgeMaterial[e] >= 0) ownership_.addBoundaryMass(rec.edgeMaterial[e], rec.edgeMass[e]);
+      if (rec.edgeMaterial[e] >= 0)
+        ownership_.addBoundaryMass(rec.edgeMaterial[e], rec.edgeMass[e]);
   }
 }
 

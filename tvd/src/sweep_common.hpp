@@ -17,18 +17,23 @@ namespace hvi::tvd::detail {
 
 //! The lines of one sweep direction (0: x, 1: z) of a grid.
 struct SweepShape {
-  bool xdir;      //!< lines along x
-  int N;          //!< cells per line
-  int lines;      //!< lines
-  long step;      //!< cell index stride along a line
-  bool rz;        //!< r-z geometry
-  bool radial;    //!< radial lines of an r-z grid (areas r_f, hoop source)
-  double h;       //!< cell size
+  bool xdir;    //!< lines along x
+  int N;        //!< cells per line
+  int lines;    //!< lines
+  long step;    //!< cell index stride along a line
+  bool rz;      //!< r-z geometry
+  bool radial;  //!< radial lines of an r-z grid (areas r_f, hoop source)
+  double h;     //!< cell size
 };
 inline SweepShape sweepShape(const GridSpec& g, Geometry geometry, int direction) {
   const bool xdir = direction == 0, rz = geometry == Geometry::Axisymmetric;
-  return {xdir, xdir ? g.nx : g.nz, xdir ? g.nz : g.nx, xdir ? 1L : static_cast<long>(g.nx),
-          rz, xdir && rz, g.dx};
+  return {xdir,
+          xdir ? g.nx : g.nz,
+          xdir ? g.nz : g.nx,
+          xdir ? 1L : static_cast<long>(g.nx),
+          rz,
+          xdir && rz,
+          g.dx};
 }
 
 inline Side sideOf(cases::Boundary b) {
@@ -65,8 +70,8 @@ inline std::string failureMessage(long step, bool xdir, double dt, int a, int li
   return fmt::format(
       "tvd: step {} ({} sweep, dt = {:.4g} us): cell (i={}, k={}) at x = {:.6g}, z = {:.6g} "
       "cm: {} (rho = {:.6g} g/cm^3, e = {:.6g} cm^2/us^2)",
-      step, xdir ? "x" : "z", dt, i, k, g.x0 + (i + 0.5) * g.dx, g.z0 + (k + 0.5) * g.dz,
-      fail.what, fail.rho, fail.e);
+      step, xdir ? "x" : "z", dt, i, k, g.x0 + (i + 0.5) * g.dx, g.z0 + (k + 0.5) * g.dz, fail.what,
+      fail.rho, fail.e);
 }
 
 }  // namespace hvi::tvd::detail

@@ -21,8 +21,8 @@ namespace hvi::tvd {
 namespace {
 
 using detail::Side;
-using CutFn = bool (*)(detail::CutLineWork&, const detail::LineSetup&,
-                       const detail::SweepContext&, detail::LineBudget&, detail::LineFailure&);
+using CutFn = bool (*)(detail::CutLineWork&, const detail::LineSetup&, const detail::SweepContext&,
+                       detail::LineBudget&, detail::LineFailure&);
 
 template <class Lim, bool Radial>
 bool runCutLine(detail::CutLineWork& w, const detail::LineSetup& s, const detail::SweepContext& c,
@@ -50,7 +50,8 @@ CutFn pickCutFunction(cases::Limiter limiter, bool radial) {
 }  // namespace
 
 void TvdSolver::sweepCut(int direction, double dt) {
-  const auto [xdir, N, lines, step, rz, radial, h] = detail::sweepShape(grid_, geometry_, direction);
+  const auto [xdir, N, lines, step, rz, radial, h] =
+      detail::sweepShape(grid_, geometry_, direction);
   const int nx = grid_.nx;
   const CutFn fn = pickCutFunction(params_.limiter, radial);
   const int P = phases_.count;
@@ -123,11 +124,21 @@ void TvdSolver::sweepCut(int direction, double dt) {
       const FaceApertures& fa = phases_.faces;
       const long faceStride = xdir ? 1 : static_cast<long>(fa.nx);
       auto facesOf = [&](int p, int side) {
-        return xdir ? &fa.x[static_cast<std::size_t>(((2L * p + side) * fa.nz + line) * (fa.nx + 1))]
-                    : &fa.z[static_cast<std::size_t>(((2L * p + side) * (fa.nz + 1)) * fa.nx + line)];
+        return xdir
+                   ? &fa.x[static_cast<std::size_t>(((2L * p + side) * fa.nz + line) * (fa.nx + 1))]
+                   : &fa.z[static_cast<std::size_t>(((2L * p + side) * (fa.nz + 1)) * fa.nx +
+                                                    line)];
       };
       for (int p = 0; p < P; ++p) {
         detail::PhaseLine& ph = W.phase[static_cast<std::size_t>(p)];
+        // A phase the line does not touch (none of its cells, ghosts included) is skipped.
+        {
+          const double* al = phases_.alpha[static_cast<std::size_t>(p)].data();
+          const int lo = std::max(a - 2, 0), hi = std::min(b + 2, N);
+          ph.active = false;
+          for (int pos = lo; pos < hi && !ph.active; ++pos) ph.active = al[at(pos)] >= kPhaseAbsent;
+        }
+        if (!ph.active) continue;
         const Conserved& Q = phases_.q[static_cast<std::size_t>(p)];
         const double* arrays[4] = {Q.rho.data(), xdir ? Q.mx.data() : Q.mz.data(),
                                    xdir ? Q.mz.data() : Q.mx.data(), Q.E.data()};
@@ -173,8 +184,8 @@ void TvdSolver::sweepCut(int direction, double dt) {
           }
         }
       }
-      const double lineScale = detail::lineGeometry(radial, rz, h, a, n, line, faceX_, cellX_,
-                                                    W.area, W.invVol, W.invR);
+      const double lineScale =
+          detail::lineGeometry(radial, rz, h, a, n, line, faceX_, cellX_, W.area, W.invVol, W.invR);
 
       detail::LineBudget lb;
       detail::LineFailure fail;
@@ -184,6 +195,7 @@ void TvdSolver::sweepCut(int direction, double dt) {
       }
       for (int p = 0; p < P; ++p) {
         const detail::PhaseLine& ph = W.phase[static_cast<std::size_t>(p)];
+        if (!ph.active) continue;
         Conserved& Q = phases_.q[static_cast<std::size_t>(p)];
         double* arrays[4] = {Q.rho.data(), xdir ? Q.mx.data() : Q.mz.data(),
                              xdir ? Q.mz.data() : Q.mx.data(), Q.E.data()};

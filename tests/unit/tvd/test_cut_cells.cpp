@@ -68,8 +68,7 @@ TEST(TvdCutCells, ImpactConservesEveryMaterial) {
     s.materials.push_back(material("copper", eos::aluminiumStudy()));
     s.bodies.push_back(
         body("plate", 0, cases::Rect{-1.0, 1.0, -0.31, 0.013}, {2.79, {0.0, 0.0}, 0.0}));
-    s.bodies.push_back(
-        body("disk", 1, cases::Disk{{0.0, 0.263}, 0.25}, {2.79, {0.0, -0.5}, 0.0}));
+    s.bodies.push_back(body("disk", 1, cases::Disk{{0.0, 0.263}, 0.25}, {2.79, {0.0, -0.5}, 0.0}));
     TvdSolver solver(s);
     const auto m0 = phaseMasses(solver);
     const Totals t0 = solver.totals();
@@ -122,9 +121,8 @@ TEST(TvdCutCells, TwoMaterialContactSlips) {
   s.bodies.push_back(body("slider", 0,
                           cases::Polygon{{{-0.7, -0.7}, {0.7, 0.7}, {0, 1.4}, {-1.4, 0}}},
                           {2.79, {v, v}, 0.0}));
-  s.bodies.push_back(body("base", 1,
-                          cases::Polygon{{{-0.7, -0.7}, {0, -1.4}, {1.4, 0}, {0.7, 0.7}}},
-                          {8.93, {}, 0.0}));
+  s.bodies.push_back(body(
+      "base", 1, cases::Polygon{{{-0.7, -0.7}, {0, -1.4}, {1.4, 0}, {0.7, 0.7}}}, {8.93, {}, 0.0}));
   TvdSolver solver(s);
   runTo(solver, 0.4);
   double err = 0.0;
@@ -138,8 +136,8 @@ TEST(TvdCutCells, TwoMaterialContactSlips) {
       const double x = -1.6 + (static_cast<double>(c % nx) + 0.5) * h;
       const double z = -1.6 + (static_cast<double>(c / nx) + 0.5) * h;
       if (std::hypot(x, z) > 0.3 || !(a[c] >= kPhaseAbsent)) continue;
-      err = std::max({err, std::abs(q.rho[c] / a[c] / rho0 - 1),
-                      std::abs(q.mx[c] / q.rho[c] - vx), std::abs(q.mz[c] / q.rho[c] - vx)});
+      err = std::max({err, std::abs(q.rho[c] / a[c] / rho0 - 1), std::abs(q.mx[c] / q.rho[c] - vx),
+                      std::abs(q.mz[c] / q.rho[c] - vx)});
     }
   }
   std::printf("  slip at 45 degrees, cut cells: max state error near the contact %.2e\n", err);
@@ -178,9 +176,10 @@ TEST(TvdCutCells, DiskCarriedTwentyDiameters) {
                            std::abs(q.mx[c] / q.rho[c] - u) / u, std::abs(q.mz[c] / q.rho[c]) / u});
     if (r > R + 1.5 * h && a[c] >= kPhaseAbsent) outside = std::max(outside, a[c]);
   }
-  std::printf("  %ld steps: mass change %.3e, interior state error %.3e (not asserted), "
-              "material beyond R + 1.5 h %.3e\n",
-              solver.step(), m1[0] / m0[0] - 1.0, interior, outside);
+  std::printf(
+      "  %ld steps: mass change %.3e, interior state error %.3e (not asserted), "
+      "material beyond R + 1.5 h %.3e\n",
+      solver.step(), m1[0] / m0[0] - 1.0, interior, outside);
   EXPECT_NEAR(m1[0], m0[0], 1e-12 * m0[0]);
   EXPECT_EQ(outside, 0.0);
 }

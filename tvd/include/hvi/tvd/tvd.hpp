@@ -112,7 +112,12 @@ class TvdSolver final : public Solver {
   // Scene and settings.
   cases::TvdParams params_;
   Options options_;
+  // Per phase: the conservative mode gives every body its own phase (a copy of its material),
+  // so that the line between two bodies of one material is a material interface, not a tracer
+  // that the phase's mass flows across; elsewhere one per scene material.
   std::vector<cases::Material> materials_;
+  std::vector<cases::Material> sceneMaterials_;  // the scene's materials
+  std::vector<int> sceneMaterialOf_;             // per entry of materials_: its scene material
   std::vector<std::string> bodyNames_;
   std::vector<int> objectMaterial_;                  // material of each body (object)
   std::vector<Ownership::ObjectState> bodyStates_;  // initial state of each body (object)
