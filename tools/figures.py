@@ -62,9 +62,12 @@ DPI = 120
 ZOOM_DPI = 150  # one 0.01 cm particle spacing is ~2 pixels in the zoom
 
 
-def run_scene(hvi, scene, out):
-    """Runs one scene; returns what its summary.json says (status, wall time, conservation)."""
+def run_scene(hvi, scene, out, interfaces=None):
+    """Runs one scene; returns what its summary.json says (status, wall time, conservation).
+    interfaces: the TVD interface mode to force (whole_cell reproduces the study's method)."""
     cmd = [hvi, "run", scene, "--out", out, "--quiet"]
+    if interfaces and "_tvd" in os.path.basename(scene):
+        cmd += ["--set", f"tvd.interfaces={interfaces}"]
     if os.path.isdir(out):  # snapshots of an earlier run would be mixed with the new ones
         shutil.rmtree(out)
     print("figures:", " ".join(cmd), flush=True)
@@ -301,6 +304,9 @@ def main():
     p.add_argument("--reuse", action="store_true", help="reuse results already in --results")
     p.add_argument("--only", nargs="*", choices=sorted(RUNS), help="runs to use (default all)")
     p.add_argument("--no-compare", action="store_true", help="skip the hvi compare tables")
+    p.add_argument("--tvd-interfaces", choices=["whole_cell", "conservative"],
+                   help="TVD interface mode (default: the scenes' own, i.e. conservative; "
+                        "whole_cell is the study's method)")
     a = p.parse_args()
     suffix = "_coarse" if a.coarse else ""
     os.makedirs(a.out, exist_ok=True)
@@ -319,7 +325,8 @@ def main():
         dirs[key] = d
         rec = log.get(key)
         if not (a.reuse and os.path.exists(os.path.join(d, "summary.json"))):
-            rec = run_scene(a.hvi, os.path.join("cases", "scenes", scene + suffix + ".toml"), d)
+            rec = run_scene(a.hvi, os.path.join("cases", "scenes", scene + suffix + ".toml"), d,
+                            a.tvd_interfaces)
         log[key] = summary_record(d, rec)
         with open(log_path, "w") as f:
             json.dump(log, f, indent=1)

@@ -89,7 +89,7 @@ constexpr std::array<KeyRow<TvdParams>, 6> kTvd{{
      .choices = interfaceNames,
      .docValue = "`\"whole_cell\"` (the study's owners), `\"conservative\"` (cut cells, mass exact "
                  "per material)",
-     .docDefault = "`\"whole_cell\"`"},
+     .docDefault = "`\"conservative\"`"},
 }};
 
 // Measured on sod_x at 1e6 cells: 170 MB peak memory, 49 MB of HDF5 + VTK per snapshot, 2 s for

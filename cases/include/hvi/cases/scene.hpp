@@ -119,7 +119,7 @@ enum class InterfaceMode { WholeCell, Conservative };
 
 struct TvdParams {
   double cellSize = 0.015;  //!< dx = dz, cm
-  InterfaceMode interfaces = InterfaceMode::WholeCell;
+  InterfaceMode interfaces = InterfaceMode::Conservative;
   Limiter limiter = Limiter::Minmod;
   double cfl = 0.4;
   double markerSpacing = 0.5;  //!< target marker spacing in cells
