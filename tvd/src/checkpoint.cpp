@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <istream>
 #include <ostream>
+#include <string>
 
 #include "hvi/common/binary.hpp"
 #include "hvi/common/error.hpp"
@@ -27,6 +28,17 @@ Budget getBudget(BinaryReader& r) {
   return b;
 }
 
+void putConserved(BinaryWriter& w, const Conserved& U) {
+  for (const auto* a : {&U.rho, &U.mx, &U.mz, &U.E}) w.array(*a);
+}
+//! `what`: the name of the state in the error messages ("" for the mixture, "phase " for a phase).
+void getConserved(BinaryReader& r, Conserved& U, std::size_t n, const std::string& what) {
+  r.array(U.rho, n, what + "density");
+  r.array(U.mx, n, what + "momentum x");
+  r.array(U.mz, n, what + "momentum z");
+  r.array(U.E, n, what + "energy");
+}
+
 }  // namespace
 
 void TvdSolver::writeCheckpoint(std::ostream& out) const {
@@ -45,10 +57,7 @@ void TvdSolver::writeCheckpoint(std::ostream& out) const {
   for (const Budget* b : {&ledger_.boundary, &ledger_.interfaces, &ledger_.ownerChanges,
                           &ledger_.floors, &ledger_.outflow})
     putBudget(w, *b);
-  w.array(U_.rho);
-  w.array(U_.mx);
-  w.array(U_.mz);
-  w.array(U_.E);
+  putConserved(w, U_);
   if (markersOn_) {
     w.array(ownership_.owner());
     w.array(ownership_.normal());
@@ -60,11 +69,7 @@ void TvdSolver::writeCheckpoint(std::ostream& out) const {
     // after a marker step may leave an orphan's fraction off the geometry.
     w.value<std::int64_t>(orphans_);
     for (int p = 0; p < phases_.count; ++p) {
-      const Conserved& q = phases_.q[static_cast<std::size_t>(p)];
-      w.array(q.rho);
-      w.array(q.mx);
-      w.array(q.mz);
-      w.array(q.E);
+      putConserved(w, phases_.q[static_cast<std::size_t>(p)]);
       w.array(phases_.alpha[static_cast<std::size_t>(p)]);
     }
   }
@@ -102,10 +107,7 @@ void TvdSolver::readCheckpoint(std::istream& in) {
   }
   const auto n = static_cast<std::size_t>(grid_.cells());
   Conserved U;
-  r.array(U.rho, n, "density");
-  r.array(U.mx, n, "momentum x");
-  r.array(U.mz, n, "momentum z");
-  r.array(U.E, n, "energy");
+  getConserved(r, U, n, "");
   if (markersOn_) {
     std::vector<int> owner;
     std::vector<Vec2> normal;
@@ -122,11 +124,7 @@ void TvdSolver::readCheckpoint(std::istream& in) {
     const auto orphans = r.value<std::int64_t>();
     Phases ph = phases_;
     for (int p = 0; p < ph.count; ++p) {
-      Conserved& q = ph.q[static_cast<std::size_t>(p)];
-      r.array(q.rho, n, "phase density");
-      r.array(q.mx, n, "phase momentum x");
-      r.array(q.mz, n, "phase momentum z");
-      r.array(q.E, n, "phase energy");
+      getConserved(r, ph.q[static_cast<std::size_t>(p)], n, "phase ");
       r.array(ph.alpha[static_cast<std::size_t>(p)], n, "phase volume fraction");
     }
     ownership_.remeasure();  // the fractions and apertures of the restored lines

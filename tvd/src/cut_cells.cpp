@@ -8,6 +8,7 @@
 #include "eos_line.hpp"
 #include "hvi/common/error.hpp"
 #include "hvi/tvd/tvd.hpp"
+#include "signal_speed.hpp"
 
 namespace hvi::tvd {
 
@@ -34,23 +35,11 @@ void TvdSolver::initialiseCut(const cases::Scene& scene) {
           best = o;
         }
       if (best == objects) continue;
-      Ownership::ObjectState st = bodyStates_[best];
-      if (scene.bodies[best].radial) {
-        const long i = static_cast<long>(c) % grid_.nx, k = static_cast<long>(c) / grid_.nx;
-        const Vec2 v = cases::initialVelocity(
-            scene.bodies[best], geometry_,
-            {grid_.x0 + (i + 0.5) * grid_.dx, grid_.z0 + (k + 0.5) * grid_.dz});
-        st.vx = v.x;
-        st.vz = v.z;
-      }
-      Conserved& q = phases_.q[static_cast<std::size_t>(p)];
-      q.rho[c] = a * st.rho;
-      q.mx[c] = a * st.rho * st.vx;
-      q.mz[c] = a * st.rho * st.vz;
-      q.E[c] = a * st.rho * (st.e + 0.5 * (st.vx * st.vx + st.vz * st.vz));
+      addState(phases_.q[static_cast<std::size_t>(p)], c, stateAtCentre(scene, best, c), a);
     }
   }
   volumeFresh_ = true;
+  alphaOld_ = phases_.alpha;  // sized once: each step swaps the two
   phases_.mixture(U_);
 }
 
@@ -58,56 +47,30 @@ void TvdSolver::initialiseCut(const cases::Scene& scene) {
 // markers) the mixture velocity of every cell that holds material.
 double TvdSolver::signalSpeedCut(double* vx, double* vz, long* worstCell) const {
   const long cells = grid_.cells();
-  double smax = 0.0;
-  long worst = -1, bad = -1;
+  detail::SpeedScan scan;
   int badPhase = -1;
   for (int p = 0; p < phases_.count; ++p) {
     const auto& alpha = phases_.alpha[static_cast<std::size_t>(p)];
     const Conserved& q = phases_.q[static_cast<std::size_t>(p)];
     std::visit(
         [&](const auto& eos) {
-#pragma omp parallel num_threads(threads_) if (grid_.cells() >= kParallelCells)
-          {
-            double sLocal = 0.0;
-            long wLocal = -1, bLocal = -1;
-#pragma omp for schedule(static)
-            for (long c = 0; c < cells; ++c) {
-              const auto cc = static_cast<std::size_t>(c);
-              const double a = alpha[cc];
-              if (!(a >= kPhaseAbsent)) continue;
-              const double r = q.rho[cc] / a;
-              if (r == 0.0) continue;  // emptied by the positivity limiter; filled by repair
-              if (!(r > 0.0)) {
-                if (bLocal < 0) bLocal = c;
-                continue;
-              }
-              const CellState s =
-                  detail::cellState(eos, r, q.mx[cc] / a, q.mz[cc] / a, q.E[cc] / a);
-              const double v = std::max(std::abs(s.u), std::abs(s.w)) + s.c;
-              if (!std::isfinite(v)) {
-                if (bLocal < 0) bLocal = c;
-                continue;
-              }
-              if (v > sLocal) {
-                sLocal = v;
-                wLocal = c;
-              }
-            }
-#pragma omp critical(hvi_tvd_signal_cut)
-            {
-              if (sLocal > smax || (sLocal == smax && wLocal >= 0 && wLocal < worst)) {
-                smax = sLocal;
-                worst = wLocal;
-              }
-              if (bLocal >= 0 && (bad < 0 || bLocal < bad)) {
-                bad = bLocal;
-                badPhase = p;
-              }
-            }
-          }
+          const bool found =
+              detail::scanSignalSpeed(cells, threads_, scan, [&](long c, CellState& s) {
+                const auto cc = static_cast<std::size_t>(c);
+                const double a = alpha[cc];
+                if (!(a >= kPhaseAbsent)) return 0;
+                const double r = q.rho[cc] / a;
+                if (r == 0.0) return 0;  // emptied by the positivity limiter; filled by repair
+                if (!(r > 0.0)) return -1;
+                s = detail::cellState(eos, r, q.mx[cc] / a, q.mz[cc] / a, q.E[cc] / a);
+                return 1;
+              });
+          if (found) badPhase = p;
         },
         materials_[static_cast<std::size_t>(p)].eos);
   }
+  const long bad = scan.bad, worst = scan.worst;
+  const double smax = scan.smax;
   if (bad >= 0) {
     const auto c = static_cast<std::size_t>(bad);
     const Conserved& q = phases_.q[static_cast<std::size_t>(badPhase)];

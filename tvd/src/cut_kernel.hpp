@@ -530,13 +530,8 @@ class CutLineSolver {
                  double weight) {
     PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
     for (int j = 2; j <= n_ + 1; ++j) {
-      if (!ph.present[j]) continue;
-      if (q[kRho][j] >= C_.rhoCut[p] * S[j] ||
-          (q[kMn][j] == 0.0 && q[kMt][j] == 0.0 && q[kE][j] == 0.0))
-        continue;
-      const double vol = weight / W_.invVol[j];
-      B_.floors.add(0.0, -(q[kMn][j] * vol), -(q[kMt][j] * vol), -(q[kE][j] * vol), C_.axis);
-      q[kMn][j] = q[kMt][j] = q[kE][j] = 0.0;
+      if (ph.present[j] && !(q[kRho][j] >= C_.rhoCut[p] * S[j]))
+        putAtRest(q, j, weight / W_.invVol[j], C_.axis, B_.floors);
     }
   }
 

@@ -43,7 +43,6 @@ struct CutLineWork {
   int capacity;
   std::vector<PhaseLine> phase;
   std::vector<double> area, invVol, invR;
-  std::vector<double> scratch;  // face contact areas left to pair
 };
 
 }  // namespace hvi::tvd::detail

@@ -14,6 +14,28 @@ namespace hvi::tvd {
 // body (scene order) that contains it or in vacuum, which there is the single material at half
 // the vacuum density, at rest and at e = 0: bodies keep their mass to the sampling accuracy
 // and a discontinuity crossing a cell starts smeared over that cell only.
+Ownership::ObjectState TvdSolver::stateAtCentre(const cases::Scene& scene, std::size_t body,
+                                                std::size_t cell) const {
+  Ownership::ObjectState st = bodyStates_[body];
+  if (scene.bodies[body].radial) {  // a radial field is sampled at the cell centre
+    const long i = static_cast<long>(cell) % grid_.nx, k = static_cast<long>(cell) / grid_.nx;
+    const Vec2 v =
+        cases::initialVelocity(scene.bodies[body], geometry_,
+                               {grid_.x0 + (i + 0.5) * grid_.dx, grid_.z0 + (k + 0.5) * grid_.dz});
+    st.vx = v.x;
+    st.vz = v.z;
+  }
+  return st;
+}
+
+void TvdSolver::addState(Conserved& U, std::size_t c, const Ownership::ObjectState& b,
+                         double weight) {
+  U.rho[c] += weight * b.rho;
+  U.mx[c] += weight * b.rho * b.vx;
+  U.mz[c] += weight * b.rho * b.vz;
+  U.E[c] += weight * b.rho * (b.e + 0.5 * (b.vx * b.vx + b.vz * b.vz));
+}
+
 void TvdSolver::initialiseState(const cases::Scene& scene) {
   const long cells = grid_.cells();
   const auto n = static_cast<std::size_t>(cells);
@@ -22,27 +44,14 @@ void TvdSolver::initialiseState(const cases::Scene& scene) {
   U_.mz.assign(n, 0.0);
   U_.E.assign(n, 0.0);
   auto put = [&](std::size_t c, const Ownership::ObjectState& b, double weight) {
-    U_.rho[c] += weight * b.rho;
-    U_.mx[c] += weight * b.rho * b.vx;
-    U_.mz[c] += weight * b.rho * b.vz;
-    U_.E[c] += weight * b.rho * (b.e + 0.5 * (b.vx * b.vx + b.vz * b.vz));
+    addState(U_, c, b, weight);
   };
 
   if (markersOn_) {
     const std::vector<int>& owner = ownership_.owner();  // rasterised by Ownership::setUp
     for (std::size_t c = 0; c < n; ++c) {
       if (owner[c] < 0) continue;
-      const auto o = static_cast<std::size_t>(owner[c]);
-      Ownership::ObjectState st = bodyStates_[o];
-      if (scene.bodies[o].radial) {  // a radial field is sampled at the cell centre
-        const long i = static_cast<long>(c) % grid_.nx, k = static_cast<long>(c) / grid_.nx;
-        const Vec2 v = cases::initialVelocity(
-            scene.bodies[o], geometry_,
-            {grid_.x0 + (i + 0.5) * grid_.dx, grid_.z0 + (k + 0.5) * grid_.dz});
-        st.vx = v.x;
-        st.vz = v.z;
-      }
-      put(c, st, 1.0);
+      put(c, stateAtCentre(scene, static_cast<std::size_t>(owner[c]), c), 1.0);
     }
     return;
   }

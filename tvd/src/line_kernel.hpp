@@ -52,6 +52,14 @@ inline void faceNormal(const LineWork& W, int f, double& nn, double& nt) {
   }
 }
 
+//! Puts cell j of U at rest and cold, its mass kept, and books the momentum and energy that
+//! removes (`vol`: the cell's volume in line units times the stage weight).
+inline void putAtRest(State4& U, int j, double vol, int axis, Budget& floors) {
+  if (U[kMn][j] == 0.0 && U[kMt][j] == 0.0 && U[kE][j] == 0.0) return;
+  floors.add(0.0, -(U[kMn][j] * vol), -(U[kMt][j] * vol), -(U[kE][j] * vol), axis);
+  U[kMn][j] = U[kMt][j] = U[kE][j] = 0.0;
+}
+
 //! True unless the cell has rho <= 0, a non-finite value, or an internal energy below zero by
 //! more than rounding of the kinetic energy (cold material at e = 0 sits at +-1 ulp).
 inline bool physical(double rho, double m, double t, double E) {
@@ -303,11 +311,7 @@ class LineSolver {
     for (int j = 2; j <= n_ + 1; ++j) {
       if (isVacuum(j)) continue;
       const int m = Markers ? W_.mat[j] : C_.singleMaterial;
-      if (U[kRho][j] >= C_.rhoCut[m] || (U[kMn][j] == 0.0 && U[kMt][j] == 0.0 && U[kE][j] == 0.0))
-        continue;
-      const double vol = weight / W_.invVol[j];
-      B_.floors.add(0.0, -(U[kMn][j] * vol), -(U[kMt][j] * vol), -(U[kE][j] * vol), C_.axis);
-      U[kMn][j] = U[kMt][j] = U[kE][j] = 0.0;
+      if (!(U[kRho][j] >= C_.rhoCut[m])) putAtRest(U, j, weight / W_.invVol[j], C_.axis, B_.floors);
     }
   }
 

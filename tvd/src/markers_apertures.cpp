@@ -52,22 +52,13 @@ void addRun(double lo, double hi, const Family& fam, double* line) {
 }  // namespace
 
 void MarkerSet::faceApertures(const GridSpec& grid, FaceApertures& out) const {
-  faceApertures(grid, out, nullptr, objects_);
-}
-
-void MarkerSet::faceApertures(const GridSpec& grid, FaceApertures& out,
-                              const std::vector<int>* group, int groups) const {
   const int nx = std::max(grid.nx, 0), nz = std::max(grid.nz, 0);
-  const int slots = group != nullptr ? groups : objects_;
-  auto slotOf = [&](int object) {
-    return group != nullptr ? (*group)[static_cast<std::size_t>(object)] : object;
-  };
   out.nx = nx;
   out.nz = nz;
-  out.objects = slots;
+  out.objects = objects_;
   const long xPerSide = static_cast<long>(nx + 1) * nz, zPerSide = static_cast<long>(nz + 1) * nx;
-  out.x.resize(static_cast<std::size_t>(2L * slots * xPerSide));
-  out.z.resize(static_cast<std::size_t>(2L * slots * zPerSide));
+  out.x.resize(static_cast<std::size_t>(2L * objects_ * xPerSide));
+  out.z.resize(static_cast<std::size_t>(2L * objects_ * zPerSide));
   if (nx == 0 || nz == 0) return;
   const Family families[2] = {
       {true, nx + 1, nz, 1, nx + 1, xPerSide, +1},
@@ -76,7 +67,7 @@ void MarkerSet::faceApertures(const GridSpec& grid, FaceApertures& out,
   const auto starts = static_cast<std::size_t>(std::max(nx, nz) + 2);
   if (crossingStart_.size() < starts) crossingStart_.resize(starts);
 
-  for (int obj = 0; obj < slots; ++obj) {
+  for (int obj = 0; obj < objects_; ++obj) {
     for (int fi = 0; fi < 2; ++fi) {
       const Family& fam = families[fi];
       double* base = (fam.vertical ? out.x.data() : out.z.data()) + 2L * obj * fam.sideStride;
@@ -111,7 +102,7 @@ void MarkerSet::faceApertures(const GridSpec& grid, FaceApertures& out,
       };
       auto forSegments = [&](auto&& f) {
         for (const auto& l : lines_) {
-          if (l.object < 0 || l.object >= objects_ || slotOf(l.object) != obj) continue;
+          if (l.object != obj) continue;
           const std::size_t n = l.points.size();
           if (n < 3) continue;  // as rasterize: a line needs three points to enclose anything
           for (std::size_t j = 0; j < n; ++j)

@@ -114,14 +114,17 @@ void Ownership::extendIntoVacuum(int layers) {
   }
 }
 
-void Ownership::move(const Conserved& U, double dt) {
+void Ownership::advanceLines(const Conserved& U, double dt) {
   const GridSpec& g = cells_.grid;
   centredVelocity(U);
   extendIntoVacuum(2);
   markers_.advect(g, vxMid_.data(), vzMid_.data(), dt);
   markers_.redistribute(g);
+}
+
+void Ownership::move(const Conserved& U, double dt) {
+  advanceLines(U, dt);
   remeasure();
-  changeCount_ = 0;
 }
 
 void Ownership::remeasure() {
@@ -134,10 +137,7 @@ void Ownership::remeasure() {
 void Ownership::update(Conserved& U, double dt, Budget& booked) {
   const GridSpec& g = cells_.grid;
   const long cells = g.cells();
-  centredVelocity(U);
-  extendIntoVacuum(2);
-  markers_.advect(g, vxMid_.data(), vzMid_.data(), dt);
-  markers_.redistribute(g);
+  advanceLines(U, dt);
   markers_.rasterize(g, ownerNew_, normalNew_);
   detail::interfaceNormals(markers_, g, ownerNew_, normalNew_, normalLength_);
 

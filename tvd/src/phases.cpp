@@ -34,7 +34,6 @@ CutLineWork::CutLineWork(int cap, int phases) : capacity(cap) {
   area.assign(nb, 1.0);
   invVol.assign(nb, 1.0);
   invR.assign(nb, 0.0);
-  scratch.assign(nb, 0.0);
 }
 
 }  // namespace detail
@@ -53,87 +52,45 @@ void Phases::resize(int phases, const GridSpec& g) {
 
 namespace {
 
-// Sums per-object cell fractions into per-phase ones, capped at 1, then scales the phases of
-// each cell down together where they exceed 1 (two bodies' lines overlapping by round-off).
-void sumByPhase(const double* perObject, std::size_t n, const std::vector<int>& objectMaterial,
-                std::vector<std::vector<double>>& out) {
-  std::vector<int> objects(out.size(), 0);
-  for (int m : objectMaterial) ++objects[static_cast<std::size_t>(m)];
-  for (std::size_t p = 0; p < out.size(); ++p)
-    if (objects[p] != 1) std::fill(out[p].begin(), out[p].end(), 0.0);
-  for (std::size_t o = 0; o < objectMaterial.size(); ++o) {
-    const auto p = static_cast<std::size_t>(objectMaterial[o]);
-    double* dst = out[p].data();
-    const double* src = perObject + o * n;
-    const long cells = static_cast<long>(n);
-    if (objects[p] == 1) {
-#pragma omp parallel for schedule(static) if (cells >= kParallelCells)
-      for (long c = 0; c < cells; ++c) dst[c] = src[c];
-      continue;
-    }
-#pragma omp parallel for schedule(static) if (cells >= kParallelCells)
-    for (long c = 0; c < cells; ++c) dst[c] = std::min(dst[c] + src[c], 1.0);
-  }
-  if (out.size() < 2) return;
-  const long cells = static_cast<long>(n);
-#pragma omp parallel for schedule(static) if (cells >= kParallelCells)
-  for (long c = 0; c < cells; ++c) {
+// Where the phases together exceed 1 (a cell, or a face side, where two bodies' lines overlap by
+// round-off), each is scaled down to fit.
+void fitTogether(const std::vector<double*>& part, long n) {
+  if (part.size() < 2) return;
+#pragma omp parallel for schedule(static) if (n >= kParallelCells)
+  for (long i = 0; i < n; ++i) {
     double total = 0.0;
-    for (auto& v : out) total += v[static_cast<std::size_t>(c)];
+    for (const double* v : part) total += v[i];
     if (total > 1.0)
-      for (auto& v : out) v[static_cast<std::size_t>(c)] /= total;
-  }
-}
-
-// Where the phases' apertures of one face side exceed 1 together, each is scaled to fit.
-void fitApertures(std::vector<double>& a, int phases) {
-  if (phases < 2) return;
-  const std::size_t n = a.size() / static_cast<std::size_t>(phases);
-  const long faces = static_cast<long>(n);
-  double* base = a.data();
-  if (phases == 2) {  // the common case, two contiguous streams
-    double* a0 = base;
-    double* a1 = base + n;
-#pragma omp parallel for schedule(static) if (faces >= kParallelCells)
-    for (long f = 0; f < faces; ++f) {
-      const double total = a0[f] + a1[f];
-      if (total > 1.0) {
-        a0[f] /= total;
-        a1[f] /= total;
-      }
-    }
-    return;
-  }
-#pragma omp parallel for schedule(static) if (faces >= kParallelCells)
-  for (long f = 0; f < faces; ++f) {
-    double total = 0.0;
-    for (int p = 0; p < phases; ++p) total += base[static_cast<std::size_t>(p) * n + f];
-    if (total > 1.0)
-      for (int p = 0; p < phases; ++p) base[static_cast<std::size_t>(p) * n + f] /= total;
+      for (double* v : part) v[i] /= total;
   }
 }
 
 }  // namespace
 
-void Phases::measure(const MarkerSet& markers, const std::vector<int>& objectMaterial,
-                     const std::vector<double>& fraction) {
-  const auto cells = static_cast<std::size_t>(grid.cells());
-  sumByPhase(fraction.data(), cells, objectMaterial, alpha);
-  for (auto& a : alpha) {
-    double* v = a.data();
-    const long n = static_cast<long>(a.size());
-#pragma omp parallel for schedule(static) if (n >= kParallelCells)
-    for (long c = 0; c < n; ++c)
-      if (v[c] < kPhaseAbsent) v[c] = 0.0;
+void Phases::measure(const MarkerSet& markers, const std::vector<double>& fraction) {
+  const long cells = grid.cells();
+  std::vector<double*> part;
+  for (int p = 0; p < count; ++p) {  // phase p is body (object) p
+    double* a = alpha[static_cast<std::size_t>(p)].data();
+    const double* f =
+        fraction.data() + static_cast<std::size_t>(p) * static_cast<std::size_t>(cells);
+#pragma omp parallel for schedule(static) if (cells >= kParallelCells)
+    for (long c = 0; c < cells; ++c) a[c] = f[c];
+    part.push_back(a);
   }
-  measureFaces(markers, objectMaterial);
-}
-
-void Phases::measureFaces(const MarkerSet& markers, const std::vector<int>& objectMaterial) {
-  // Grouped by material: one winding number per phase, so the union of its bodies is wet once.
-  markers.faceApertures(grid, faces, &objectMaterial, count);
-  fitApertures(faces.x, count);
-  fitApertures(faces.z, count);
+  fitTogether(part, cells);
+  for (double* a : part) {
+#pragma omp parallel for schedule(static) if (cells >= kParallelCells)
+    for (long c = 0; c < cells; ++c)
+      if (a[c] < kPhaseAbsent) a[c] = 0.0;
+  }
+  markers.faceApertures(grid, faces);
+  for (auto* side : {&faces.x, &faces.z}) {
+    const long n = static_cast<long>(side->size()) / count;
+    part.clear();
+    for (int p = 0; p < count; ++p) part.push_back(side->data() + p * n);
+    fitTogether(part, n);
+  }
 }
 
 void Phases::mixture(Conserved& U) const {

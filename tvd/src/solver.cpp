@@ -9,6 +9,7 @@
 #include "hvi/cases/effects.hpp"
 #include "hvi/common/error.hpp"
 #include "hvi/tvd/tvd.hpp"
+#include "signal_speed.hpp"
 #include "workspace.hpp"
 
 #ifdef _OPENMP
@@ -32,8 +33,6 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
 #else
   threads_ = 1;
 #endif
-  cut_ =
-      markersOn_ && (options_.cutCells || params_.interfaces == cases::InterfaceMode::Conservative);
   const int lineCells = std::max(grid_.nx, grid_.nz);
   for (int t = 0; t < threads_; ++t) {
     work_.push_back(std::make_unique<Workspace>(lineCells));
@@ -57,7 +56,7 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
 }
 
 void TvdSolver::measurePhases() {
-  phases_.measure(ownership_.markers(), objectMaterial_, ownership_.fractions());
+  phases_.measure(ownership_.markers(), ownership_.fractions());
 }
 
 void TvdSolver::setUpGrid(const cases::Scene& scene) {
@@ -122,8 +121,9 @@ void TvdSolver::setUpMaterials(const cases::Scene& scene) {
   sceneMaterialOf_.clear();
   for (std::size_t m = 0; m < materials_.size(); ++m)
     sceneMaterialOf_.push_back(static_cast<int>(m));
-  if (scene.has(cases::Effect::MaterialInterfaces) &&
-      (options_.cutCells || params_.interfaces == cases::InterfaceMode::Conservative)) {
+  markersOn_ = scene.has(cases::Effect::MaterialInterfaces);
+  cut_ = markersOn_ && params_.interfaces == cases::InterfaceMode::Conservative;
+  if (cut_) {
     // One phase per body (tvd.hpp, materials_).
     materials_.clear();
     sceneMaterialOf_.clear();
@@ -137,7 +137,6 @@ void TvdSolver::setUpMaterials(const cases::Scene& scene) {
     rhoCut_.push_back(params_.vacuumDensity * m.rho0());
     rhoThin_.push_back(std::max(kThinFraction * m.rho0(), rhoCut_.back()));
   }
-  markersOn_ = scene.has(cases::Effect::MaterialInterfaces);
   phaseOn_ = scene.has(cases::Effect::PhaseBookkeeping);
   singleMaterial_ = scene.bodies.front().material;
   if (!markersOn_) {
@@ -154,8 +153,7 @@ void TvdSolver::setUpMaterials(const cases::Scene& scene) {
 // cell is physical, and (for the markers) the velocity at the start of the step.
 double TvdSolver::signalSpeedPass(double* vx, double* vz, long* worstCell) const {
   const long cells = grid_.cells();
-  double smax = 0.0;
-  long worst = -1, bad = -1;
+  detail::SpeedScan scan;
   const int nMat = static_cast<int>(materials_.size());
   const int* owner = markersOn_ ? ownership_.owner().data() : nullptr;
   const int* material = objectMaterial_.data();
@@ -163,47 +161,23 @@ double TvdSolver::signalSpeedPass(double* vx, double* vz, long* worstCell) const
     if (!markersOn_ && id != singleMaterial_) continue;
     std::visit(
         [&](const auto& eos) {
-#pragma omp parallel num_threads(threads_) if (grid_.cells() >= kParallelCells)
-          {
-            double sLocal = 0.0;
-            long wLocal = -1, bLocal = -1;
-#pragma omp for schedule(static)
-            for (long c = 0; c < cells; ++c) {
-              if (owner != nullptr && (owner[c] < 0 || material[owner[c]] != id)) continue;
-              const double r = U_.rho[static_cast<std::size_t>(c)];
-              if (!(r > 0.0)) {
-                if (bLocal < 0) bLocal = c;
-                continue;
-              }
-              const CellState s = detail::cellState(eos, r, U_.mx[static_cast<std::size_t>(c)],
-                                                    U_.mz[static_cast<std::size_t>(c)],
-                                                    U_.E[static_cast<std::size_t>(c)]);
-              const double v = std::max(std::abs(s.u), std::abs(s.w)) + s.c;
-              if (!std::isfinite(v)) {
-                if (bLocal < 0) bLocal = c;
-                continue;
-              }
-              if (v > sLocal) {
-                sLocal = v;
-                wLocal = c;
-              }
-              if (vx != nullptr) {
-                vx[c] = s.u;
-                vz[c] = s.w;
-              }
+          detail::scanSignalSpeed(cells, threads_, scan, [&](long c, CellState& s) {
+            if (owner != nullptr && (owner[c] < 0 || material[owner[c]] != id)) return 0;
+            const auto cc = static_cast<std::size_t>(c);
+            const double r = U_.rho[cc];
+            if (!(r > 0.0)) return -1;
+            s = detail::cellState(eos, r, U_.mx[cc], U_.mz[cc], U_.E[cc]);
+            if (vx != nullptr) {  // an unphysical state stops the run below, whatever it wrote
+              vx[c] = s.u;
+              vz[c] = s.w;
             }
-#pragma omp critical(hvi_tvd_signal)
-            {
-              if (sLocal > smax || (sLocal == smax && wLocal >= 0 && wLocal < worst)) {
-                smax = sLocal;
-                worst = wLocal;
-              }
-              if (bLocal >= 0 && (bad < 0 || bLocal < bad)) bad = bLocal;
-            }
-          }
+            return 1;
+          });
         },
         materials_[static_cast<std::size_t>(id)].eos);
   }
+  const long bad = scan.bad, worst = scan.worst;
+  const double smax = scan.smax;
   if (bad >= 0) {
     const auto c = static_cast<std::size_t>(bad);
     throw SimulationError(fmt::format(
@@ -257,7 +231,6 @@ double TvdSolver::advance(double tStop) {
       ownership_.move(U_, dt);
     }
     std::swap(alphaOld_, phases_.alpha);  // the old fractions, for the repair
-    if (phases_.alpha.size() != alphaOld_.size()) phases_.alpha = alphaOld_;
     measurePhases();
     orphans_ += phases_.repair(cellVolumes_, alphaOld_);
     volumeFresh_ = true;  // the first sweep of the next step starts from alpha

@@ -133,22 +133,13 @@ void TvdSolver::sweep(int direction, double dt) {
       auto at = [&](int pos) { return base + pos * step; };
 
       // Window: a marker run updates only the span between the first and last owned cell.
-      int a = 0, b = N;
-      if (own != nullptr) {
-        while (a < N && own[at(a)] < 0) ++a;
-        if (a == N) continue;
-        b = N;
-        while (own[at(b - 1)] < 0) --b;
-        if (a <= 2) a = 0;
-        if (b >= N - 2) b = N;
-      }
-      const int n = b - a;
+      int a = 0;
       detail::LineSetup setup;
-      setup.n = n;
-      setup.left = a == 0 ? lowSide : Side::Loaded;
-      setup.right = b == N ? highSide : Side::Loaded;
-      setup.leftEdge = a == 0;
-      setup.rightEdge = b == N;
+      if (!detail::lineWindow(N, lowSide, highSide,
+                              [&](int pos) { return own == nullptr || own[at(pos)] >= 0; }, a,
+                              setup))
+        continue;
+      const int n = setup.n;
 
       for (int j = 0; j < n + 4; ++j) {
         const int pos = a - 2 + j;
@@ -158,17 +149,9 @@ void TvdSolver::sweep(int direction, double dt) {
       }
       if (own != nullptr) {
         for (int j = 0; j < n + 4; ++j) {
-          int pos = a - 2 + j;
-          double sign = 1.0;
-          if (pos < 0) {  // ghost beyond the low end: copy or mirror
-            const bool reflect = lowSide == Side::Reflect;
-            pos = reflect ? -1 - pos : 0;
-            sign = reflect ? -1.0 : 1.0;
-          } else if (pos >= N) {
-            const bool reflect = highSide == Side::Reflect;
-            pos = reflect ? 2 * N - 1 - pos : N - 1;
-            sign = reflect ? -1.0 : 1.0;
-          }
+          bool mirrored = false;
+          const int pos = detail::ghostSource(a - 2 + j, N, lowSide, highSide, mirrored);
+          const double sign = mirrored ? -1.0 : 1.0;
           const long c = at(pos);
           const int o = own[c];
           W.owner[j] = o;
@@ -196,19 +179,13 @@ void TvdSolver::sweep(int direction, double dt) {
       }
       rec.interfaces = lb.interfaces.scaled(lineScale);
       rec.floors = lb.floors.scaled(lineScale);
+      rec.bookEdges(lb, setup, lowSide, highSide, lineScale);
+      // per material, for the renormalisation targets
       const bool edge[2] = {setup.leftEdge, setup.rightEdge};
-      const bool open[2] = {lowSide == Side::Outflow, highSide == Side::Outflow};
       const int edgeCell[2] = {2, n + 1};
       for (int e = 0; e < 2; ++e) {
-        if (!edge[e]) continue;
-        const Budget in = lb.edge[e].scaled(lineScale);
-        if (open[e])
-          rec.outflow += lb.edge[e].scaled(-lineScale);  // what left, as totals() adds it back
-        else
-          rec.boundary += in;  // a wall or the axis: only the pressure's impulse
-        // per material, for the renormalisation targets
-        if (own != nullptr && W.mat[edgeCell[e]] >= 0) {
-          rec.edgeMass[e] = in.mass;
+        if (edge[e] && own != nullptr && W.mat[edgeCell[e]] >= 0) {
+          rec.edgeMass[e] = lb.edge[e].scaled(lineScale).mass;
           rec.edgeMaterial[e] = W.mat[edgeCell[e]];
         }
       }

@@ -40,6 +40,42 @@ inline Side sideOf(cases::Boundary b) {
   return b == cases::Boundary::Outflow ? Side::Outflow : Side::Reflect;
 }
 
+//! The span of a line the kernel updates: from its first to its last occupied cell (the rest of
+//! a marker run's line is empty), widened to the domain edge when within two cells of it, and
+//! what lies beyond each end. False if no cell is occupied.
+template <class Occupied>
+inline bool lineWindow(int N, Side low, Side high, Occupied occupied, int& a, LineSetup& setup) {
+  a = 0;
+  int b = N;
+  while (a < N && !occupied(a)) ++a;
+  if (a == N) return false;
+  while (!occupied(b - 1)) --b;
+  if (a <= 2) a = 0;
+  if (b >= N - 2) b = N;
+  setup.n = b - a;
+  setup.left = a == 0 ? low : Side::Loaded;
+  setup.right = b == N ? high : Side::Loaded;
+  setup.leftEdge = a == 0;
+  setup.rightEdge = b == N;
+  return true;
+}
+
+//! The cell a buffer position `pos` (possibly beyond the line's ends) takes its data from: its
+//! mirror image beyond a reflecting end, the edge cell beyond an outflow end. `mirrored` tells
+//! a reflection (the normal components change sign).
+inline int ghostSource(int pos, int N, Side low, Side high, bool& mirrored) {
+  mirrored = false;
+  if (pos < 0) {
+    mirrored = low == Side::Reflect;
+    return mirrored ? -1 - pos : 0;
+  }
+  if (pos >= N) {
+    mirrored = high == Side::Reflect;
+    return mirrored ? 2 * N - 1 - pos : N - 1;
+  }
+  return pos;
+}
+
 //! Geometry of a loaded line in line units (cells a .. a+n-1 at buffer 2 .. n+1): r-z radial
 //! lines have face areas r_f and volumes r_j dr, every other line 1 and dr. Returns the factor
 //! from line units to the solver's (planar per cm of depth, r-z with 2 pi r).

@@ -90,35 +90,11 @@ void TvdSolver::sweepCut(int direction, double dt) {
             return true;
         return false;
       };
-      int a = 0, b = N;
-      while (a < N && !occupied(a)) ++a;
-      if (a == N) continue;
-      while (!occupied(b - 1)) --b;
-      if (a <= 2) a = 0;
-      if (b >= N - 2) b = N;
-      const int n = b - a;
+      int a = 0;
       detail::LineSetup setup;
-      setup.n = n;
-      setup.left = a == 0 ? lowSide : Side::Loaded;
-      setup.right = b == N ? highSide : Side::Loaded;
-      setup.leftEdge = a == 0;
-      setup.rightEdge = b == N;
+      if (!detail::lineWindow(N, lowSide, highSide, occupied, a, setup)) continue;
+      const int n = setup.n, b = a + n;
 
-      // Aperture of phase p at grid face gf (0..N along the line) seen from `side`; faces
-      // beyond the domain mirror (reflecting side) or copy (outflow) the boundary's faces, and
-      // the boundary face itself is seen from inside on both sides.
-      auto aperture = [&](int p, int side, int gf) {
-        if (gf <= 0) {
-          if (gf < 0 && lowSide == Side::Reflect) return aperture1(p, 1 - side, -gf, xdir, line);
-          return aperture1(p, 1, 0, xdir, line);
-        }
-        if (gf >= N) {
-          if (gf > N && highSide == Side::Reflect)
-            return aperture1(p, 1 - side, 2 * N - gf, xdir, line);
-          return aperture1(p, 0, N, xdir, line);
-        }
-        return aperture1(p, side, gf, xdir, line);
-      };
       // Apertures of the line's own faces, side `side`, as a strided array over the face index
       // along the line (x faces of row `line`, or z faces of column `line`).
       const FaceApertures& fa = phases_.faces;
@@ -128,6 +104,21 @@ void TvdSolver::sweepCut(int direction, double dt) {
                    ? &fa.x[static_cast<std::size_t>(((2L * p + side) * fa.nz + line) * (fa.nx + 1))]
                    : &fa.z[static_cast<std::size_t>(((2L * p + side) * (fa.nz + 1)) * fa.nx +
                                                     line)];
+      };
+      // Aperture of phase p at grid face gf (0..N along the line) seen from `side`; faces
+      // beyond the domain mirror (reflecting side) or copy (outflow) the boundary's faces, and
+      // the boundary face itself is seen from inside on both sides.
+      auto aperture = [&](int p, int side, int gf) {
+        if (gf <= 0) {
+          if (gf < 0 && lowSide == Side::Reflect) return facesOf(p, 1 - side)[-gf * faceStride];
+          return facesOf(p, 1)[0];
+        }
+        if (gf >= N) {
+          if (gf > N && highSide == Side::Reflect)
+            return facesOf(p, 1 - side)[(2 * N - gf) * faceStride];
+          return facesOf(p, 0)[N * faceStride];
+        }
+        return facesOf(p, side)[gf * faceStride];
       };
       for (int p = 0; p < P; ++p) {
         detail::PhaseLine& ph = W.phase[static_cast<std::size_t>(p)];
@@ -154,15 +145,9 @@ void TvdSolver::sweepCut(int direction, double dt) {
         const double* volume =
             (volumeFresh_ ? phases_.alpha : phases_.volume)[static_cast<std::size_t>(p)].data();
         for (int j = 0; j < n + 4; ++j) {
-          int pos = a - 2 + j;
-          bool ghost = false;
-          if (pos < 0) {
-            pos = lowSide == Side::Reflect ? -1 - pos : 0;
-            ghost = true;
-          } else if (pos >= N) {
-            pos = highSide == Side::Reflect ? 2 * N - 1 - pos : N - 1;
-            ghost = true;
-          }
+          bool mirrored = false;
+          const int pos = detail::ghostSource(a - 2 + j, N, lowSide, highSide, mirrored);
+          const bool ghost = pos != a - 2 + j;  // beyond the domain: the kernel fills its state
           const long c = at(pos);
           ph.alpha[j] = alpha[c] >= kPhaseAbsent ? alpha[c] : 0.0;
           ph.vol0[j] = ph.alpha[j] > 0.0 ? volume[c] : 0.0;
@@ -207,24 +192,11 @@ void TvdSolver::sweepCut(int direction, double dt) {
         }
       }
       rec.floors = lb.floors.scaled(lineScale);
-      const bool edge[2] = {setup.leftEdge, setup.rightEdge};
-      const bool open[2] = {lowSide == Side::Outflow, highSide == Side::Outflow};
-      for (int e = 0; e < 2; ++e) {
-        if (!edge[e]) continue;
-        if (open[e])
-          rec.outflow += lb.edge[e].scaled(-lineScale);
-        else
-          rec.boundary += lb.edge[e].scaled(lineScale);
-      }
+      rec.bookEdges(lb, setup, lowSide, highSide, lineScale);
     }
   }
   volumeFresh_ = false;
   finishSweep(lines);
-}
-
-// Aperture of phase p at face gf of line `line` (0 <= gf <= N) seen from `side`.
-double TvdSolver::aperture1(int p, int side, int gf, bool xdir, int line) const {
-  return xdir ? phases_.apertureX(p, side, gf, line) : phases_.apertureZ(p, side, line, gf);
 }
 
 }  // namespace hvi::tvd

@@ -33,6 +33,22 @@ struct TvdSolver::LineRecord {
   Budget boundary, interfaces, floors, outflow;
   std::array<double, 2> edgeMass{};  // mass in through the low and high domain edge
   std::array<int, 2> edgeMaterial{-1, -1};
+
+  //! What a line that reaches the domain's edges moved through them (line budget `lb`, scaled
+  //! to the solver's units): through an outflow side it is what left, as totals() adds it back;
+  //! through a wall or the axis only the pressure's impulse.
+  void bookEdges(const detail::LineBudget& lb, const detail::LineSetup& setup, detail::Side low,
+                 detail::Side high, double scale) {
+    const bool edge[2] = {setup.leftEdge, setup.rightEdge};
+    const bool open[2] = {low == detail::Side::Outflow, high == detail::Side::Outflow};
+    for (int e = 0; e < 2; ++e) {
+      if (!edge[e]) continue;
+      if (open[e])
+        outflow += lb.edge[e].scaled(-scale);
+      else
+        boundary += lb.edge[e].scaled(scale);
+    }
+  }
 };
 
 }  // namespace hvi::tvd

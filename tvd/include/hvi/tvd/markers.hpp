@@ -105,11 +105,6 @@ class MarkerSet {
   //! (no allocation once its capacity suffices; scratch is reused likewise). Cost O(markers +
   //! line crossings + objects * faces); crossings are sorted per grid line.
   void faceApertures(const GridSpec& grid, FaceApertures& out) const;
-  //! Same, for groups of objects: the lines of every object o count for group (*group)[o] (one
-  //! winding number per group, so the union of a group's objects is wet once), out.objects =
-  //! groups. The cut-cell solver groups the objects by material.
-  void faceApertures(const GridSpec& grid, FaceApertures& out, const std::vector<int>* group,
-                     int groups) const;
 
   double area(int object) const;  //!< enclosed area (shoelace) of the object's lines, cm^2
   //! Volume represented by the object: area (per unit depth, cm^2) in planar geometry,

@@ -87,6 +87,8 @@ class Ownership {
     double rho = 0.0, mx = 0.0, mz = 0.0, E = 0.0;
     long count = 0;
   };
+  // Moves the lines with the time-centred velocity and redistributes them (both modes).
+  void advanceLines(const Conserved& U, double dt);
   void centredVelocity(const Conserved& U);
   void extendIntoVacuum(int layers);
   [[nodiscard]] Change fillFor(long cell, int to, const Conserved& U,

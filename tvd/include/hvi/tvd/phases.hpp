@@ -1,5 +1,5 @@
 //! @file State and geometry of the conservative cut-cell interface mode (docs/tvd.md,
-//! "Conservative interfaces"): every material (phase) keeps its own conserved state in every
+//! "Conservative interfaces"): every body (phase) keeps its own conserved state in every
 //! cell it occupies, on the part of the cell the marker lines give it.
 #pragma once
 #include <vector>
@@ -17,10 +17,10 @@ struct CellVolumes;
 //! worth a flux. Material stranded in such a cell is handed to a neighbour (Phases::repair).
 inline constexpr double kPhaseAbsent = 1e-9;
 
-//! Per phase p (material index) and cell c: the volume fraction alpha (from the marker lines),
-//! the conserved state per unit CELL volume q = alpha U (U the phase's own state per unit phase
-//! volume), and the one-sided face apertures of the phase (MarkerSet::faceApertures summed over
-//! the phase's objects, capped at 1).
+//! Per phase p (body index; the solver keeps each body's material) and cell c: the volume
+//! fraction alpha (from the marker lines), the conserved state per unit CELL volume q = alpha U
+//! (U the phase's own state per unit phase volume), and the one-sided face apertures of the
+//! phase (MarkerSet::faceApertures).
 struct Phases {
   int count = 0;
   GridSpec grid;
@@ -29,7 +29,7 @@ struct Phases {
   //! Working fractions within a step: alpha at its start, then moved by each sweep with the
   //! phases' velocities (docs/tvd.md); the marker lines give alpha again after the step.
   std::vector<std::vector<double>> volume;
-  //! One-sided face apertures per phase (FaceApertures with one slot per material).
+  //! One-sided face apertures per phase (FaceApertures, one slot per body).
   FaceApertures faces;
 
   [[nodiscard]] double apertureX(int p, int side, int i, int k) const {
@@ -39,22 +39,19 @@ struct Phases {
     return faces.az(p, side, i, k);
   }
 
-  //! Sizes every array for `phases` materials on `grid`, all empty.
+  //! Sizes every array for `phases` bodies on `grid`, all empty.
   void resize(int phases, const GridSpec& grid);
-  //! Volume fractions and apertures from the marker lines; objects of one material are one
-  //! phase (their coverage summed, capped at 1), and where the phases together cover more than a
-  //! cell (marker lines of two bodies overlapping by round-off) each is scaled to fit.
-  //! `fraction` is every object's cell fractions (MarkerSet::rasterize).
-  void measure(const MarkerSet& markers, const std::vector<int>& objectMaterial,
-               const std::vector<double>& fraction);
+  //! Volume fractions (`fraction`: every body's cell fractions, MarkerSet::rasterize) and face
+  //! apertures from the marker lines; phase p is body p. Where two bodies' lines overlap by
+  //! round-off so that the phases together cover more than a cell or a face, each is scaled to
+  //! fit.
+  void measure(const MarkerSet& markers, const std::vector<double>& fraction);
   //! After the volume fractions change: material left in a cell its phase no longer occupies
   //! goes to the neighbour of that phase with the largest fraction, and a cell the phase newly
   //! occupies shares the state of that neighbour (conservative averages of the integrals,
   //! Hu et al. 2006, section 2.5). `oldAlpha` is the fraction before the change; a phase with
   //! no neighbour within two rings keeps its old fraction there (an orphan, counted).
   long repair(const CellVolumes& volumes, const std::vector<std::vector<double>>& oldAlpha);
-  //! The face apertures alone, from `markers` (the lines at mid-step).
-  void measureFaces(const MarkerSet& markers, const std::vector<int>& objectMaterial);
   //! First part of repair for phase p: material the sweeps carried ahead of the marker lines
   //! goes to the neighbouring cells the lines give it (working fraction `volume` against alpha).
   void settle(const CellVolumes& volumes, int p);

@@ -24,8 +24,6 @@ struct Options {
   double entropyFix = 0.1;    //!< Harten's delta as a fraction of |u| + c at the face
   int contactIterations = 2;  //!< two-shock impedance updates at object/object faces
   int threads = 0;            //!< OpenMP threads for the sweeps; 0: omp_get_max_threads()
-  //! Conservative cut-cell interfaces (docs/tvd.md) even where the scene asks for whole cells.
-  bool cutCells = false;
 };
 
 //! Eulerian TVD solver (the scheme is specified in docs/tvd.md):
@@ -94,8 +92,13 @@ class TvdSolver final : public Solver {
   void sweep(int direction, double dt);
   void sweepCut(int direction, double dt);
   void finishSweep(int lines);  // failure report or the line records into the ledger
-  [[nodiscard]] double aperture1(int p, int side, int gf, bool xdir, int line) const;
   void initialiseCut(const cases::Scene& scene);
+  // Body `body`'s initial state at the centre of `cell` (a radial velocity field sampled there).
+  [[nodiscard]] Ownership::ObjectState stateAtCentre(const cases::Scene& scene, std::size_t body,
+                                                     std::size_t cell) const;
+  // Adds `weight` times the conserved form of state `b` to cell c of U.
+  static void addState(Conserved& U, std::size_t c, const Ownership::ObjectState& b,
+                       double weight);
   void measurePhases();  // phases_ geometry from the marker lines (cut-cell mode)
   double signalSpeedCut(double* vx, double* vz, long* worstCell) const;
   // Largest signal speed over the material cells (and the check that each is physical); with
