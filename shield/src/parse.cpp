@@ -170,7 +170,7 @@ ShieldSpec parseShield(std::string_view text, const std::string& sourceName) {
     s.resolution.cellsAcrossProjectile =
         r.number(*res, "cells_across_projectile", "resolution.cells_across_projectile", 8.0, 1.0);
     s.resolution.cellsAcrossThinnestWall = r.number(
-        *res, "cells_across_thinnest_wall", "resolution.cells_across_thinnest_wall", 3.0, 1.0);
+        *res, "cells_across_thinnest_wall", "resolution.cells_across_thinnest_wall", 3.0, 1.5);
   }
   if (root.contains("radius"))
     s.radius = r.quantity(root, "radius", "radius", Dimension::Length, true);

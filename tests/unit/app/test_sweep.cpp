@@ -9,6 +9,7 @@
 
 #include "hvi/apps/driver.hpp"
 #include "hvi/apps/sweep.hpp"
+#include "hvi/shield/shield.hpp"
 #include "hvi/test/run_files.hpp"
 
 namespace hvi::app {
@@ -145,6 +146,56 @@ TEST(BallisticLimit, BisectsToTheFailureThresholdAndResumes) {
   ASSERT_EQ(runBallisticLimit(o, bl), kOk);  // everything known: nothing runs
   EXPECT_EQ(f.calls().size(), runs);
   EXPECT_EQ(test::readJson(f.dir / "out" / "ballistic_limit.json").at("points"), j.at("points"));
+}
+
+}  // namespace
+}  // namespace hvi::app
+
+namespace hvi::app {
+namespace {
+
+// A real run of a tiny generated shield scene: each snapshot's record carries the rear wall's
+// state and the summary its verdict (intact: the debris has not reached the wall at 0.4 us).
+TEST(ShieldRunRecord, RunRecordsTheRearWallVerdict) {
+  for (const char* solver : {"tvd", "sph"}) {
+    const fs::path dir = test::freshDir("sweep", std::string("record_") + solver);
+    const std::string decl = std::string("solver = \"") + solver + R"("
+radius = "0.6 cm"
+end_time = "0.4 us"
+snapshots = 2
+[projectile]
+material = "al2017_t4"
+diameter = "0.2 cm"
+speed = "7 km/s"
+[[walls]]
+material = "al6061_t6"
+thickness = "0.1 cm"
+[[walls]]
+material = "al2024_t3"
+thickness = "0.2 cm"
+gap = "0.5 cm"
+[resolution]
+cells_across_projectile = 4
+cells_across_thinnest_wall = 2
+)";
+    std::ofstream(dir / "shield.toml") << decl;
+    std::ofstream(dir / "scene.in.toml")
+        << shield::sceneToml(shield::loadShield(dir / "shield.toml"));
+    RunOptions o;
+    o.scene = dir / "scene.in.toml";
+    o.out = dir / "out";
+    o.quiet = true;
+    ASSERT_EQ(runScene(o), kOk) << solver;
+    const auto ts = test::readJson(o.out / "timeseries.json");
+    ASSERT_EQ(ts.at("snapshots").size(), 3u);
+    for (const auto& e : ts.at("snapshots")) {
+      ASSERT_TRUE(e.contains("rear_wall")) << solver;
+      EXPECT_EQ(e.at("rear_wall").at("mode"), "intact") << solver;
+    }
+    const auto sum = test::readJson(o.out / "summary.json");
+    ASSERT_TRUE(sum.contains("rear_wall_failure")) << solver;
+    EXPECT_FALSE(sum.at("rear_wall_failure").at("perforated").get<bool>());
+  }
 }
 
 }  // namespace
