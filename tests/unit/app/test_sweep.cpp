@@ -7,6 +7,10 @@
 #include <fstream>
 #include <sstream>
 
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include "hvi/apps/driver.hpp"
 #include "hvi/apps/sweep.hpp"
 #include "hvi/shield/shield.hpp"
@@ -26,6 +30,11 @@ mkdir -p "$out"
 line=$(grep '^# shield-case:' "$scene")
 v=$(echo "$line" | sed 's/.*speed_km_s=\([^ ]*\).*/\1/')
 d=$(echo "$line" | sed 's/.*diameter_cm=\([^ ]*\).*/\1/')
+if [ -n "$HVI_FAKE_SLEEP" ] && [ -z "$mode" ]; then
+  trap 'echo x > "$out/checkpoint.bin"; echo "{\"status\": \"interrupted\"}" > "$out/summary.json"; exit 130' INT
+  sleep 30 &
+  wait $!
+fi
 if [ -n "$HVI_FAKE_INTERRUPT" ] && [ "$(basename "$out")" = "$HVI_FAKE_INTERRUPT" ] && [ -z "$mode" ]; then
   echo x > "$out/checkpoint.bin"
   echo '{"status": "interrupted", "wall_seconds": 0.1}' > "$out/summary.json"
@@ -44,6 +53,7 @@ struct Fake {
     fs::permissions(exe, fs::perms::owner_all);
     ::setenv("HVI_FAKE_LOG", log.c_str(), 1);
     ::unsetenv("HVI_FAKE_INTERRUPT");
+    ::unsetenv("HVI_FAKE_SLEEP");
   }
   [[nodiscard]] std::vector<std::string> calls() const {
     std::ifstream in(log);
@@ -109,6 +119,39 @@ TEST(Sweep, InterruptedCaseIsRestartedFromItsCheckpoint) {
   EXPECT_EQ(calls[1], "tvd_v7_d0.5 restart");
   j = test::readJson(f.dir / "out" / "sweep.json");
   EXPECT_EQ(j.at("runs").at(0).at("status"), "completed");
+}
+
+TEST(Sweep, CtrlCCheckpointsTheRunningCasesAndTheSameCommandResumes) {
+  // The sweep (a child process here) gets SIGINT while both cases run: it passes the stop to
+  // them, they checkpoint and exit 130, the sweep writes its results and exits 130. The same
+  // sweep again restarts both from their checkpoints.
+  Fake f("ctrl_c");
+  SweepGrid g;
+  g.speeds = {7.0};
+  g.diameters = {0.4, 0.8};
+  ::setenv("HVI_FAKE_SLEEP", "1", 1);
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) ::_exit(runSweep(f.options(), g));
+  for (int i = 0; i < 100 && f.calls().size() < 2; ++i) ::usleep(50000);
+  ASSERT_EQ(f.calls().size(), 2u);
+  ::usleep(300000);  // the children are in their sleep
+  ::kill(pid, SIGINT);
+  int st = 0;
+  ASSERT_EQ(::waitpid(pid, &st, 0), pid);
+  ASSERT_TRUE(WIFEXITED(st));
+  EXPECT_EQ(WEXITSTATUS(st), kInterrupted);
+  auto j = test::readJson(f.dir / "out" / "sweep.json");
+  ASSERT_EQ(j.at("runs").size(), 2u);
+  for (const auto& r : j.at("runs")) EXPECT_EQ(r.at("status"), "interrupted");
+  ::unsetenv("HVI_FAKE_SLEEP");
+  ASSERT_EQ(runSweep(f.options(), g), kOk);
+  const auto calls = f.calls();
+  ASSERT_EQ(calls.size(), 4u);
+  EXPECT_NE(calls[2].find("restart"), std::string::npos);
+  EXPECT_NE(calls[3].find("restart"), std::string::npos);
+  j = test::readJson(f.dir / "out" / "sweep.json");
+  for (const auto& r : j.at("runs")) EXPECT_EQ(r.at("status"), "completed");
 }
 
 TEST(Sweep, ChangedShieldValuesAreRunAgain) {
