@@ -169,9 +169,15 @@ CaseOutcome CaseRunner::collect(const Child& ch, int exitStatus) const {
   if (exitStatus == kInterrupted) o.status = "interrupted";
   if (!s.is_null()) {
     o.wallSeconds = s.value("wall_seconds", 0.0);
-    if (s.contains("rear_wall_failure") && o.status == "completed") {
-      o.verdict = s.at("rear_wall_failure");
-      o.perforated = o.verdict.value("perforated", false);
+    if (s.contains("rear_wall_failure") && !s.at("rear_wall_failure").is_null()) {
+      const json& v = s.at("rear_wall_failure");
+      // A completed run's verdict stands; a run the solver could not finish (exit 3) counts
+      // when it had already shown the perforation in an earlier snapshot, and is no result
+      // otherwise (its wall might have failed later).
+      if (o.status == "completed" || (o.status == "failed" && v.value("perforated", false))) {
+        o.verdict = v;
+        o.perforated = v.value("perforated", false);
+      }
     }
   }
   if (o.status == "completed" && !o.perforated) o.status = "error";  // no rear-wall verdict

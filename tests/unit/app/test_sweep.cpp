@@ -41,6 +41,10 @@ if [ -n "$HVI_FAKE_INTERRUPT" ] && [ "$(basename "$out")" = "$HVI_FAKE_INTERRUPT
   exit 130
 fi
 p=$(awk -v v="$v" -v d="$d" 'BEGIN { print (d >= 0.2 + 0.05 * v) ? "true" : "false" }')
+if [ -n "$HVI_FAKE_CRASH" ]; then
+  echo "{\"status\": \"failed\", \"rear_wall_failure\": {\"perforated\": $p, \"mode\": \"through_hole\", \"first_time_us\": 1.0}}" > "$out/summary.json"
+  exit 3
+fi
 echo "{\"status\": \"completed\", \"wall_seconds\": 0.01, \"rear_wall_failure\": {\"perforated\": $p, \"mode\": \"through_hole\", \"first_time_us\": 1.0}}" > "$out/summary.json"
 )SH";
 
@@ -54,6 +58,7 @@ struct Fake {
     ::setenv("HVI_FAKE_LOG", log.c_str(), 1);
     ::unsetenv("HVI_FAKE_INTERRUPT");
     ::unsetenv("HVI_FAKE_SLEEP");
+    ::unsetenv("HVI_FAKE_CRASH");
   }
   [[nodiscard]] std::vector<std::string> calls() const {
     std::ifstream in(log);
@@ -152,6 +157,24 @@ TEST(Sweep, CtrlCCheckpointsTheRunningCasesAndTheSameCommandResumes) {
   EXPECT_NE(calls[3].find("restart"), std::string::npos);
   j = test::readJson(f.dir / "out" / "sweep.json");
   for (const auto& r : j.at("runs")) EXPECT_EQ(r.at("status"), "completed");
+}
+
+TEST(Sweep, ACrashedRunCountsOnlyWhenItHadShownThePerforation) {
+  Fake f("crash");
+  SweepGrid g;
+  g.speeds = {7.0};
+  g.diameters = {0.4, 0.6};  // the stand-in fails the wall from d = 0.55 cm at 7 km/s
+  ::setenv("HVI_FAKE_CRASH", "1", 1);
+  ASSERT_EQ(runSweep(f.options(), g), kOk);
+  const auto j = test::readJson(f.dir / "out" / "sweep.json");
+  ASSERT_EQ(j.at("runs").size(), 2u);
+  for (const auto& r : j.at("runs")) {
+    EXPECT_EQ(r.at("status"), "failed");
+    if (r.at("diameter_cm").get<double>() > 0.5)
+      EXPECT_TRUE(r.at("perforated").get<bool>());
+    else
+      EXPECT_TRUE(r.at("perforated").is_null());
+  }
 }
 
 TEST(Sweep, ChangedShieldValuesAreRunAgain) {
