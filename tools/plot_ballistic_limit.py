@@ -25,13 +25,13 @@ def main(src, dst):
         for vr in ble["regimes_km_s"]:
             ax.axvline(vr, color="0.7", lw=0.8, ls=":")
     runs = data["runs"]
-    for perforated, marker, face, label in ((True, "x", "C3", "rear wall failed"),
-                                            (False, "o", "none", "rear wall survived")):
+    for perforated, style, label in ((True, dict(marker="x", color="C3"), "rear wall failed"),
+                                     (False, dict(marker="o", facecolors="none", edgecolors="C0"),
+                                      "rear wall survived")):
         pts = [(r["speed_km_s"], r["diameter_cm"]) for r in runs if r.get("perforated") is perforated]
         if pts:
             xs, ys = zip(*pts)
-            ax.scatter(xs, ys, marker=marker, facecolors=face, edgecolors="C3" if perforated else "C0",
-                       label=label, zorder=3)
+            ax.scatter(xs, ys, label=label, zorder=3, **style)
     pts = [p for p in data["points"] if p["critical_diameter_cm"] is not None]
     if pts:
         xs = [p["speed_km_s"] for p in pts]
