@@ -94,46 +94,14 @@ RearWallState measureRearWall(const Snapshot& s, const RearWallConfig& cfg, doub
   const compare::Resampled r = compare::resample(s, compare::coveringGrid(s, h));
   const GridSpec& g = r.grid;
   const bool rz = s.geometry == Geometry::Axisymmetric;
-  const double ringFactor = rz ? kTwoPi : 1.0;
 
-  // Rear-wall cells and their mass.
+  // Rear-wall cells of the resampled grid, split into 8-connected pieces.
   std::vector<char> in(static_cast<std::size_t>(g.cells()), 0);
-  std::vector<double> mass(in.size(), 0.0);
-  for (long c = 0; c < g.cells(); ++c) {
-    if (r.object[c] != wall || !(r.density[c] > 0.0)) continue;
-    in[c] = 1;
-    mass[c] = r.density[c] * r.cellVolume(static_cast<int>(c % g.nx)) * ringFactor;
-  }
-  // Momentum of the rear wall's source items (particles or cells), binned into the same cells.
-  std::vector<double> pz(in.size(), 0.0), pm(in.size(), 0.0);
-  const Field* obj = s.find("object");
-  const Field* m = s.find("mass");
-  const Field* rho = s.find("density");
-  for (long a = 0; a < s.count(); ++a) {
-    if (std::lround(obj->data[a]) != wall) continue;
-    double x, z, ma;
-    if (s.kind == Snapshot::Kind::Particles) {
-      x = s.positions[a].x;
-      z = s.positions[a].z;
-      ma = m ? m->data[a] : 1.0;
-    } else {
-      const int i = static_cast<int>(a % s.grid.nx), k = static_cast<int>(a / s.grid.nx);
-      x = s.grid.x0 + (i + 0.5) * s.grid.dx;
-      z = s.grid.z0 + (k + 0.5) * s.grid.dz;
-      ma = (rho ? rho->data[a] : 1.0) * s.grid.dx * s.grid.dz * (rz ? x : 1.0);
-    }
-    const int i = static_cast<int>(std::floor((x - g.x0) / g.dx));
-    const int k = static_cast<int>(std::floor((z - g.z0) / g.dz));
-    if (i < 0 || k < 0 || i >= g.nx || k >= g.nz) continue;
-    const long c = static_cast<long>(k) * g.nx + i;
-    pz[c] += ma * vel->data[2 * a + 1];
-    pm[c] += ma;
-  }
-
+  for (long c = 0; c < g.cells(); ++c) in[c] = r.object[c] == wall && r.density[c] > 0.0;
   std::vector<int> lab;
   const int n = label(in, g.nx, g.nz, lab);
   struct Acc {
-    double mass = 0, mr = 0, mz = 0, pz = 0, pm = 0, zLow = 1e300, zHigh = -1e300, rOuter = 0;
+    double mass = 0, mr = 0, mz = 0, pz = 0, zLow = 1e300, zHigh = -1e300, rOuter = 0;
     int cells = 0;
   };
   std::vector<Acc> acc(static_cast<std::size_t>(n));
@@ -141,15 +109,45 @@ RearWallState measureRearWall(const Snapshot& s, const RearWallConfig& cfg, doub
     if (lab[c] < 0) continue;
     Acc& a = acc[static_cast<std::size_t>(lab[c])];
     const int i = static_cast<int>(c % g.nx), k = static_cast<int>(c / g.nx);
-    a.mass += mass[c];
-    a.mr += mass[c] * r.xCentre(i);
-    a.mz += mass[c] * r.zCentre(k);
-    a.pz += pz[c];
-    a.pm += pm[c];
     a.zLow = std::min(a.zLow, g.z0 + k * g.dz);
     a.zHigh = std::max(a.zHigh, g.z0 + (k + 1) * g.dz);
     a.rOuter = std::max(a.rOuter, g.x0 + (i + 1) * g.dx);
     ++a.cells;
+  }
+  // Mass, centroid and momentum of each piece from the source items (particles or cells) of the
+  // rear wall, each given to the piece of its cell or, on a piece's smeared edge, of a
+  // neighbouring cell: a thin piece's mass is then its particles', not the resampled field's
+  // (which loses the part of a thin layer that falls below the material threshold).
+  const Field* obj = s.find("object");
+  const Field* m = s.find("mass");
+  const Field* rho = s.find("density");
+  for (long it = 0; it < s.count(); ++it) {
+    if (std::lround(obj->data[it]) != wall) continue;
+    double x, z, ma;
+    if (s.kind == Snapshot::Kind::Particles) {
+      x = s.positions[it].x;
+      z = s.positions[it].z;
+      ma = m ? m->data[it] : 0.0;
+    } else {
+      const int i = static_cast<int>(it % s.grid.nx), k = static_cast<int>(it / s.grid.nx);
+      x = s.grid.x0 + (i + 0.5) * s.grid.dx;
+      z = s.grid.z0 + (k + 0.5) * s.grid.dz;
+      ma = (rho ? rho->data[it] : 0.0) * s.grid.dx * s.grid.dz * (rz ? kTwoPi * x : 1.0);
+    }
+    const int i = static_cast<int>(std::floor((x - g.x0) / g.dx));
+    const int k = static_cast<int>(std::floor((z - g.z0) / g.dz));
+    int piece = -1;
+    for (int d = 0; d < 9 && piece < 0; ++d) {  // own cell first, then the 8 neighbours
+      const int ii = i + (d == 0 ? 0 : (d - 1) % 3 - 1), kk = k + (d == 0 ? 0 : (d - 1) / 3 - 1);
+      if (ii < 0 || kk < 0 || ii >= g.nx || kk >= g.nz) continue;
+      piece = lab[static_cast<std::size_t>(kk) * g.nx + ii];
+    }
+    if (piece < 0) continue;  // dust of the wall that no piece holds
+    Acc& a = acc[static_cast<std::size_t>(piece)];
+    a.mass += ma;
+    a.mr += ma * x;
+    a.mz += ma * z;
+    a.pz += ma * vel->data[2 * it + 1];
   }
 
   RearWallState st;
@@ -167,7 +165,7 @@ RearWallState measureRearWall(const Snapshot& s, const RearWallConfig& cfg, doub
                        [](const Acc& a, const Acc& b) { return a.mass < b.mass; }) -
       acc.begin());
   const Acc& mainAcc = acc[static_cast<std::size_t>(main)];
-  st.mainVelocityZ = mainAcc.pm > 0 ? mainAcc.pz / mainAcc.pm : 0.0;
+  st.mainVelocityZ = mainAcc.mass > 0 ? mainAcc.pz / mainAcc.mass : 0.0;
   const double mainCentroidZ = mainAcc.mz / mainAcc.mass;
 
   // Through-holes: columns inside the plate radius where the main piece's areal mass is below
@@ -202,9 +200,9 @@ RearWallState measureRearWall(const Snapshot& s, const RearWallConfig& cfg, doub
   for (int p = 0; p < n; ++p) {
     if (p == main) continue;
     const Acc& a = acc[static_cast<std::size_t>(p)];
-    if (a.cells < cfg.minFragmentCells) continue;
+    if (a.cells < cfg.minFragmentCells || !(a.mass > 0.0)) continue;
     const double cz = a.mz / a.mass;
-    const double vz = a.pm > 0 ? a.pz / a.pm : 0.0;
+    const double vz = a.pz / a.mass;
     const bool downrange = (cz - mainCentroidZ) * cfg.direction > 0.0;
     const bool away = (vz - st.mainVelocityZ) * cfg.direction > 0.0;
     if (!downrange || !away) continue;

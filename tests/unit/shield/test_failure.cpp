@@ -136,6 +136,63 @@ TEST(RearWallFailure, PieceThrownUprangeIsNotSpall) {
   EXPECT_FALSE(measureRearWall(s, config()).perforated());
 }
 
+// The same walls as SPH particles on a square lattice of 0.05 cm (r-z ring masses
+// 2 pi r rho dx dz, h = dx): the particle path resamples onto a grid of the particle spacing.
+Snapshot particles(const Paint& paint, const Velocity& vz) {
+  Snapshot s = makeSnapshot("sph", Snapshot::Kind::Particles, Geometry::Axisymmetric, 5.0, 100);
+  std::vector<double> rho, h, mass, mat, obj, vx, vzs;
+  for (int k = 0; k < kN; ++k)
+    for (int i = 0; i < kN; ++i) {
+      const double x = (i + 0.5) * kDx, z = (k + 0.5) * kDx;
+      const int o = paint(x, z);
+      if (o < 0) continue;
+      s.positions.push_back({x, z});
+      rho.push_back(2.7);
+      h.push_back(kDx);
+      mass.push_back(2.0 * std::numbers::pi * x * 2.7 * kDx * kDx);
+      mat.push_back(0);
+      obj.push_back(o);
+      vx.push_back(0.0);
+      vzs.push_back(vz(x, z));
+    }
+  addField(s, Quantity::Density, rho);
+  addField(s, Quantity::SmoothingLength, h);
+  addField(s, Quantity::Mass, mass);
+  addField(s, Quantity::Material, mat);
+  addField(s, Quantity::Object, obj);
+  addField(s, Quantity::Velocity, vx, vzs);
+  s.materialNames = {"aluminium"};
+  s.objectNames = {"projectile", "bumper", "rear_wall"};
+  return s;
+}
+
+TEST(RearWallFailure, ParticleSnapshots) {
+  // Intact: no hole, no spall.
+  EXPECT_EQ(measureRearWall(particles([](double, double z) { return inWall(z) ? 2 : -1; }, still),
+                            config())
+                .mode(),
+            "intact");
+  // No particles within r < 0.3 cm: a hole whose edge is found within a particle spacing
+  // (the kernel smears the edge over about one spacing).
+  const RearWallState hole = measureRearWall(
+      particles([](double x, double z) { return inWall(z) && x > 0.3 ? 2 : -1; }, still), config());
+  ASSERT_TRUE(hole.throughHole());
+  EXPECT_DOUBLE_EQ(hole.holes[0].rInner, 0.0);
+  EXPECT_NEAR(hole.holes[0].rOuter, 0.3, kDx + 1e-9);
+  // A disk of particles 0.1 cm behind the wall moving away: detached spall with its particles'
+  // mass, 2.7 pi 0.4^2 0.1 (the ring masses of the lattice sum to it exactly).
+  const RearWallState sp = measureRearWall(
+      particles(
+          [](double x, double z) { return inWall(z) || (x < 0.4 && z > 0.6 && z < 0.7) ? 2 : -1; },
+          [](double, double z) { return z < 0.8 ? -0.1 : 0.0; }),
+      config());
+  EXPECT_FALSE(sp.throughHole());
+  ASSERT_EQ(sp.spall.size(), 1u);
+  EXPECT_NEAR(sp.spall[0].velocityZ, -0.1, 1e-12);
+  EXPECT_NEAR(sp.spall[0].mass, 2.7 * std::numbers::pi * 0.16 * 0.1, 1e-12);
+  EXPECT_NEAR(sp.spall[0].centroidZ, 0.65, 1e-12);
+}
+
 TEST(RearWallFailure, VerdictTakesTheFirstFailedSnapshot) {
   RearWallState ok, bad;
   ok.time = 1.0;
