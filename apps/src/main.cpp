@@ -1,7 +1,9 @@
 //! @file The `hvi` command line: run, check, compare.
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <thread>
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
@@ -38,12 +40,14 @@ void addCompareOptions(CLI::App& cmd, hvi::compare::CompareCliOptions& opt) {
 
 //! Options shared by `hvi sweep` and `hvi ballistic-limit`.
 void addSweepOptions(CLI::App& cmd, hvi::app::SweepOptions& opt) {
+  opt.jobs = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   cmd.add_option("shield", opt.shield, "Shield declaration (TOML, docs/shield.md)")
       ->required()
       ->check(CLI::ExistingFile);
   cmd.add_option("--out,-o", opt.out, "Folder for the cases' scenes, runs and results")
       ->capture_default_str();
-  cmd.add_option("--jobs,-j", opt.jobs, "Runs at once (each a child `hvi run`, one thread each)")
+  cmd.add_option("--jobs,-j", opt.jobs,
+                 "Runs at once (each a child `hvi run`, one thread each; default: the cores)")
       ->capture_default_str();
   cmd.add_option("--set,-s", opt.overrides, "Passed to every `hvi run`, e.g. --set tvd.cfl=0.3");
   cmd.add_option("--hvi", opt.hvi, "Executable run for each case (default: this hvi)");

@@ -77,6 +77,13 @@ json shieldJson(const shield::ShieldSpec& s) {
           {"spacing_cm", s.spacing()}};
 }
 
+// A list of a sweep's values: every one finite and > 0.
+void checkPositive(const char* option, const std::vector<double>& v, const char* unit) {
+  for (double x : v)
+    if (!(x > 0.0) || !std::isfinite(x))
+      throw InputError(fmt::format("{} {}: allowed: values > 0 in {}", option, x, unit));
+}
+
 // Shared by both commands: parse, stop handlers, and errors to exit codes.
 template <class F>
 int guarded(const char* label, F&& body) {
@@ -96,6 +103,11 @@ int guarded(const char* label, F&& body) {
 
 int runSweep(const SweepOptions& o, const SweepGrid& g) {
   return guarded("sweep", [&] {
+    checkPositive("--speed", g.speeds, "km/s");
+    checkPositive("--diameter", g.diameters, "cm");
+    checkPositive("--standoff", g.standoffs, "cm");
+    checkPositive("--rear-wall", g.rearWalls, "cm");
+    checkPositive("--bumper", g.bumpers, "cm");
     const shield::ShieldSpec base = shield::loadShield(o.shield);
     // The declared value where a list is empty.
     const auto orDeclared = [](const std::vector<double>& v) {
@@ -154,6 +166,7 @@ int runBallisticLimit(const SweepOptions& o, const BallisticLimitOptions& bl) {
     shield::ShieldSpec base = shield::loadShield(o.shield);
     base.solver = bl.solver;
     if (bl.speeds.empty()) throw InputError("--speed: give one or more speeds (km/s)");
+    checkPositive("--speed", bl.speeds, "km/s");
     if (!(bl.tolerance > 0 && bl.tolerance < 1))
       throw InputError(fmt::format("--tolerance {}: allowed: 0 < tolerance < 1", bl.tolerance));
     std::optional<shield::WhippleBle> ble;

@@ -24,7 +24,7 @@ struct ShieldCase {
 struct SweepOptions {
   std::filesystem::path shield;  //!< shield declaration
   std::filesystem::path out = "sweep";
-  int jobs = 1;                        //!< runs at once
+  int jobs = 1;                        //!< runs at once (the command line: the cores)
   std::vector<std::string> overrides;  //!< --set, passed to every `hvi run`
   std::string hvi;                     //!< executable run for each case (default: this one)
   bool quiet = false;
