@@ -1,8 +1,10 @@
-//! @file Debris-cloud features of a snapshot, through the compare library.
+//! @file Debris-cloud features and rear-wall failure of a snapshot, through the compare and
+//! shield libraries.
 #include "hvi/apps/features_hook.hpp"
 
 #include "hvi/common/error.hpp"
 #include "hvi/compare/features.hpp"
+#include "hvi/shield/failure.hpp"
 
 namespace hvi::app {
 
@@ -14,6 +16,24 @@ nlohmann::json measureFeaturesJson(const Snapshot& snap, const cases::Scene& sce
   } catch (const InputError&) {
     return nullptr;
   }
+}
+
+nlohmann::json measureRearWallJson(const Snapshot& snap, const cases::Scene& scene) {
+  const auto cfg = shield::rearWallConfigFromScene(scene);
+  if (!cfg) return nullptr;
+  try {
+    return shield::toJson(shield::measureRearWall(snap, *cfg));
+  } catch (const InputError&) {
+    return nullptr;  // no object or velocity field: nothing to measure, the run goes on
+  }
+}
+
+nlohmann::json rearWallVerdictJson(const nlohmann::json& history) {
+  nlohmann::json states = nlohmann::json::array();
+  for (const auto& e : history)
+    if (e.contains("rear_wall")) states.push_back(e.at("rear_wall"));
+  if (states.empty()) return nullptr;
+  return shield::failureVerdict(states);
 }
 
 }  // namespace hvi::app

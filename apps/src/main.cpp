@@ -1,12 +1,15 @@
 //! @file The `hvi` command line: run, check, compare.
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <thread>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include "hvi/apps/driver.hpp"
+#include "hvi/apps/sweep.hpp"
 #include "hvi/cases/load.hpp"
 #include "hvi/common/error.hpp"
 #include "hvi/compare/command.hpp"
@@ -35,6 +38,37 @@ void addCompareOptions(CLI::App& cmd, hvi::compare::CompareCliOptions& opt) {
                "domains overlap");
 }
 
+//! Options shared by `hvi sweep` and `hvi ballistic-limit`.
+void addSweepOptions(CLI::App& cmd, hvi::app::SweepOptions& opt) {
+  opt.jobs = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  cmd.add_option("shield", opt.shield, "Shield declaration (TOML, docs/shield.md)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd.add_option("--out,-o", opt.out, "Folder for the cases' scenes, runs and results")
+      ->capture_default_str();
+  cmd.add_option("--jobs,-j", opt.jobs,
+                 "Runs at once (each a child `hvi run`, one thread each; default: the cores)")
+      ->capture_default_str();
+  cmd.add_option("--set,-s", opt.overrides, "Passed to every `hvi run`, e.g. --set tvd.cfl=0.3");
+  cmd.add_option("--hvi", opt.hvi, "Executable run for each case (default: this hvi)");
+  cmd.add_flag("--quiet,-q", opt.quiet, "No progress lines");
+}
+
+//! "sph,tvd" into solver kinds; false on an unknown name.
+bool parseSolvers(const std::vector<std::string>& names, std::vector<hvi::cases::SolverKind>& out) {
+  for (const auto& n : names) {
+    if (n == "sph")
+      out.push_back(hvi::cases::SolverKind::Sph);
+    else if (n == "tvd")
+      out.push_back(hvi::cases::SolverKind::Tvd);
+    else {
+      fmt::print(stderr, "hvi: --solver {}: allowed: sph, tvd\n", n);
+      return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -55,27 +89,69 @@ int main(int argc, char** argv) {
   runCmd->add_option("--set,-s", run.overrides,
                      "Override a scene value, e.g. --set sph.alpha=1.5 --set 'time.end=2 us'");
   runCmd->add_flag("--restart", run.restart, "Continue from <out>/checkpoint.bin");
-  runCmd->add_flag("--overwrite", run.overwrite,
-                   "Remove the results of an earlier run in --out first (only files hvi run writes)");
+  runCmd->add_flag(
+      "--overwrite", run.overwrite,
+      "Remove the results of an earlier run in --out first (only files hvi run writes)");
   runCmd->add_flag("--quiet,-q", run.quiet, "No progress line");
-  runCmd->add_option("--stop-after", run.stopAfterSteps,
-                     "Stop (with a checkpoint, exit 130) after this many steps, as Ctrl-C would; 0: "
-                     "before the first step");
+  runCmd->add_option(
+      "--stop-after", run.stopAfterSteps,
+      "Stop (with a checkpoint, exit 130) after this many steps, as Ctrl-C would; 0: "
+      "before the first step");
   run.program = argc > 0 ? argv[0] : "hvi";
 
   std::string checkScene;
   std::vector<std::string> checkOverrides;
   auto* checkCmd = app.add_subcommand("check", "Validate a scene and print it resolved");
-  checkCmd->add_option("scene", checkScene, "Scene file (TOML)")->required()->check(CLI::ExistingFile);
+  checkCmd->add_option("scene", checkScene, "Scene file (TOML)")
+      ->required()
+      ->check(CLI::ExistingFile);
   checkCmd->add_option("--set,-s", checkOverrides, "Override a scene value");
 
   hvi::compare::CompareCliOptions cmp;
   std::string cmpA, cmpB;
   auto* cmpCmd = app.add_subcommand(
-      "compare", "Compare two results (SPH vs TVD, or two runs) on one grid: density, material, features");
+      "compare",
+      "Compare two results (SPH vs TVD, or two runs) on one grid: density, material, features");
   cmpCmd->add_option("a", cmpA, "Snapshot (.h5) or run folder")->required();
   cmpCmd->add_option("b", cmpB, "Snapshot (.h5) or run folder")->required();
   addCompareOptions(*cmpCmd, cmp);
+
+  hvi::app::SweepOptions sweepOpt;
+  hvi::app::SweepGrid grid;
+  std::vector<std::string> sweepSolvers;
+  auto* sweepCmd = app.add_subcommand(
+      "sweep", "Run a shield over parameters (every combination), several at once, resumable");
+  addSweepOptions(*sweepCmd, sweepOpt);
+  sweepCmd->add_option("--solver", sweepSolvers, "Solvers: sph, tvd")->delimiter(',');
+  sweepCmd->add_option("--speed", grid.speeds, "Impact speeds, km/s (e.g. 3,5,7)")->delimiter(',');
+  sweepCmd->add_option("--diameter", grid.diameters, "Projectile diameters, cm")->delimiter(',');
+  sweepCmd
+      ->add_option("--standoff", grid.standoffs, "Standoffs (bumper rear face to rear wall), cm")
+      ->delimiter(',');
+  sweepCmd->add_option("--rear-wall", grid.rearWalls, "Rear-wall thicknesses, cm")->delimiter(',');
+  sweepCmd->add_option("--bumper", grid.bumpers, "Bumper thicknesses, cm")->delimiter(',');
+
+  hvi::app::SweepOptions blOpt;
+  blOpt.out = "ballistic_limit";
+  hvi::app::BallisticLimitOptions bl;
+  std::string blSolver = "tvd";
+  auto* blCmd = app.add_subcommand(
+      "ballistic-limit",
+      "Critical projectile diameter at each speed by bisection on rear-wall failure");
+  addSweepOptions(*blCmd, blOpt);
+  blCmd->add_option("--solver", blSolver, "sph or tvd")->capture_default_str();
+  blCmd->add_option("--speed", bl.speeds, "Impact speeds, km/s (e.g. 2,3,5,7,9,12)")
+      ->delimiter(',')
+      ->required();
+  blCmd
+      ->add_option("--tolerance", bl.tolerance,
+                   "Stop when (failed - survived) <= tolerance * midpoint")
+      ->capture_default_str();
+  blCmd->add_option("--d-min", bl.dMin, "Start bracket, cm (default: 0.5 x the BLE's d_c)");
+  blCmd->add_option("--d-max", bl.dMax, "Start bracket, cm (default: 2 x the BLE's d_c)");
+  bl.plotScript = HVI_TOOLS_DIR "/plot_ballistic_limit.py";
+  blCmd->add_option("--plot-script", bl.plotScript, "Python script drawing the PNG ('' for none)")
+      ->capture_default_str();
 
   // CLI11 reports a mistyped command as an unexpected argument; name it and the commands instead.
   const auto isCommand = [&](const std::string& name) {
@@ -84,8 +160,11 @@ int main(int argc, char** argv) {
     return false;
   };
   if (argc > 1 && argv[1][0] != '-' && !isCommand(argv[1])) {
-    fmt::print(stderr, "hvi: unknown command '{}'; the commands are run, check and compare (see "
-                       "hvi --help)\n", argv[1]);
+    fmt::print(stderr,
+               "hvi: unknown command '{}'; the commands are run, check, compare, sweep and "
+               "ballistic-limit (see "
+               "hvi --help)\n",
+               argv[1]);
     return hvi::app::kBadInput;
   }
   try {
@@ -121,6 +200,16 @@ int main(int argc, char** argv) {
       }
     }
     if (*cmpCmd) return hvi::compare::runCompareCommand(cmpA, cmpB, cmp);
+    if (*sweepCmd) {
+      if (!parseSolvers(sweepSolvers, grid.solvers)) return hvi::app::kBadInput;
+      return hvi::app::runSweep(sweepOpt, grid);
+    }
+    if (*blCmd) {
+      std::vector<hvi::cases::SolverKind> k;
+      if (!parseSolvers({blSolver}, k)) return hvi::app::kBadInput;
+      bl.solver = k.front();
+      return hvi::app::runBallisticLimit(blOpt, bl);
+    }
   } catch (const hvi::OutputError& e) {
     fmt::print(stderr, "hvi: output could not be written: {}\n", e.what());
     return hvi::app::kOutputFailed;

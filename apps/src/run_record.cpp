@@ -23,8 +23,8 @@ using nlohmann::json;
 
 namespace {
 json totalsJson(const Totals& t) {
-  return {{"mass", t.mass}, {"momentum_x", t.momentumX}, {"momentum_z", t.momentumZ},
-          {"kinetic", t.kinetic}, {"internal", t.internal}, {"energy", t.energy()}};
+  return {{"mass", t.mass},       {"momentum_x", t.momentumX}, {"momentum_z", t.momentumZ},
+          {"kinetic", t.kinetic}, {"internal", t.internal},    {"energy", t.energy()}};
 }
 Totals minus(const Totals& a, const Totals& b) {
   Totals t;
@@ -66,10 +66,16 @@ void RunRecord::afterStep(const Solver& solver, double dt) {
 }
 
 void RunRecord::snapshot(const Snapshot& snap, const Totals& totals, const std::string& stem) {
-  json e = {{"time", snap.time}, {"step", snap.step}, {"file", stem},
+  json e = {{"time", snap.time},
+            {"step", snap.step},
+            {"file", stem},
             {"totals", totalsJson(totals)},
-            {"peak_density", peak(snap, "density")}, {"peak_pressure", peak(snap, "pressure")}};
-  if (scene_.has(cases::Effect::Features)) e["features"] = measureFeaturesJson(snap, scene_);
+            {"peak_density", peak(snap, "density")},
+            {"peak_pressure", peak(snap, "pressure")}};
+  if (scene_.has(cases::Effect::Features)) {
+    e["features"] = measureFeaturesJson(snap, scene_);
+    if (auto rw = measureRearWallJson(snap, scene_); !rw.is_null()) e["rear_wall"] = std::move(rw);
+  }
   history_.push_back(std::move(e));
   writeTimeseries();
   appendEnergyBudget();
@@ -135,13 +141,18 @@ void RunRecord::finish(const Solver& solver, double wallSeconds, long stepsThisR
         {"momentum_z_rel_error", relative(now.momentumZ, initial_.momentumZ, pScale)}}},
       {"snapshots", history_.size()},
   };
+  if (auto verdict = rearWallVerdictJson(history_); !verdict.is_null())
+    s["rear_wall_failure"] = std::move(verdict);
   writeTextAtomically(out_ / "summary.json", s.dump(2));
 }
 
 json RunRecord::checkpointHeader() {
   appendEnergyBudget();
-  return {{"version", kHeaderVersion}, {"scene", sceneToml_}, {"initial", totalsJson(initial_)},
-          {"history", history_}, {"budget_rows", budgetRows_}};
+  return {{"version", kHeaderVersion},
+          {"scene", sceneToml_},
+          {"initial", totalsJson(initial_)},
+          {"history", history_},
+          {"budget_rows", budgetRows_}};
 }
 
 namespace {

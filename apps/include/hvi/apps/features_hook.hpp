@@ -1,4 +1,4 @@
-//! @file Debris-cloud features of a snapshot for the run's time series.
+//! @file Debris-cloud features and rear-wall failure of a snapshot for the run's time series.
 #pragma once
 #include <nlohmann/json.hpp>
 
@@ -9,5 +9,13 @@ namespace hvi::app {
 
 //! Aperture radius, cloud leading edge, striker remnant, bubble extent, peak density.
 nlohmann::json measureFeaturesJson(const Snapshot& snap, const cases::Scene& scene);
+
+//! Holes and detached spall of the body named "rear_wall" (a shield scene, docs/shield.md);
+//! null for a scene without one.
+nlohmann::json measureRearWallJson(const Snapshot& snap, const cases::Scene& scene);
+
+//! The run's rear-wall verdict from its timeseries entries (the first snapshot showing
+//! perforation, with its evidence); null when no entry measured a rear wall.
+nlohmann::json rearWallVerdictJson(const nlohmann::json& history);
 
 }  // namespace hvi::app
