@@ -71,6 +71,10 @@ std::string keyTableMarkdown(std::initializer_list<std::string_view> sections) {
     if (sec == "materials.tillotson") addKeys(rows, prefix, detail::tillotsonKeys());
     if (sec == "materials.ideal_gas") addKeys(rows, prefix, detail::idealGasKeys());
     if (sec == "materials.mie_gruneisen") addKeys(rows, prefix, detail::mieGruneisenKeys());
+    if (sec == "materials.strength") {
+      addKeys(rows, prefix, detail::strengthKeys());
+      addKeys(rows, prefix, detail::damageKeys());
+    }
     if (sec == "bodies") addKeys(rows, prefix, detail::bodyKeys());
     if (sec == "sph") addKeys(rows, prefix, detail::sphKeys());
     if (sec == "tvd") addKeys(rows, prefix, detail::tvdKeys());

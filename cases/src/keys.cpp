@@ -152,6 +152,7 @@ std::span<const std::string_view> keyNames(std::string_view section) {
   if (section == "tvd") return kTvdNames;
   if (section == "riemann") return kRiemannNames;
   if (section == "output") return kOutputNames;
+  if (section == "materials.strength") return strengthKeyNames();
   return structureKeyNames(section);
 }
 

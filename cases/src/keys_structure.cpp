@@ -63,7 +63,7 @@ constexpr std::array<KeyRow<Domain>, 4> kBoundaries{{
     {HVI_BOUNDARY(xmin)}, {HVI_BOUNDARY(xmax)}, {HVI_BOUNDARY(zmin)}, {HVI_BOUNDARY(zmax)}}};
 #undef HVI_BOUNDARY
 
-constexpr std::array<KeyRow<Material>, 2> kMaterial{{
+constexpr std::array<KeyRow<Material>, 3> kMaterial{{
     {.key = "preset", .kind = K::Custom,
      .docValue = "a preset (below); its values may then be overridden one by one",
      .docDefault = "none"},
@@ -71,6 +71,7 @@ constexpr std::array<KeyRow<Material>, 2> kMaterial{{
      .docValue = "`\"tillotson\"`, `\"ideal_gas\"` or `\"mie_gruneisen\"`, with **all** its keys; "
                  "with a preset, that preset's",
      .docDefault = "the preset's"},
+    {.key = "strength", .kind = K::Section},
 }};
 
 // The keys several EOS share. Without a preset a required key must be given; with one, every
@@ -197,11 +198,15 @@ Names namesOf(std::span<const KeyRow<S>> rows) {
   addNames(n, rows);
   return n;
 }
-// preset and eos, then the keys of one EOS.
+// preset and eos, then the keys of one EOS, then the sub-table strength.
 template <class S>
 Names materialNames(std::span<const KeyRow<S>> rows) {
-  Names n = namesOf(materialKeys());
+  Names n;
+  for (const auto& r : materialKeys())
+    if (r.kind != K::Section) n.push_back(r.key);
   addNames(n, rows);
+  for (const auto& r : materialKeys())
+    if (r.kind == K::Section) n.push_back(r.key);
   return n;
 }
 

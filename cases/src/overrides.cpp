@@ -26,6 +26,7 @@ enum class Kind {
   Boundaries,
   Materials,
   Material,
+  Strength,
   Bodies,
   Body,
   Sph,
@@ -97,6 +98,7 @@ std::span<const std::string_view> keysOf(Kind k) {
   static constexpr std::pair<Kind, std::string_view> kSections[] = {
       {Kind::Root, "root"},          {Kind::Time, "time"},   {Kind::Domain, "domain"},
       {Kind::Boundaries, "domain.boundaries"}, {Kind::Material, "materials"},
+      {Kind::Strength, "materials.strength"},
       {Kind::Body, "bodies"},        {Kind::Sph, "sph"},     {Kind::Tvd, "tvd"},
       {Kind::Riemann, "riemann"},    {Kind::Output, "output"}};
   for (const auto& [kind, section] : kSections)
@@ -117,6 +119,7 @@ Kind childKind(Kind parent, std::string_view key) {
     if (key == "output") return Kind::Output;
   }
   if (parent == Kind::Domain && key == "boundaries") return Kind::Boundaries;
+  if (parent == Kind::Material && key == "strength") return Kind::Strength;
   return Kind::Leaf;
 }
 

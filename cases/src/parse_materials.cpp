@@ -84,7 +84,9 @@ void parseMaterials(const TableReader& root, Scene& scene) {
            "[" + path + "] with preset = \"...\" or eos = \"...\"");
     if (name.empty()) fail(root.ctx(), node, path, "a material needs a non-empty name");
     const TableReader m(root.ctx(), *t, path);
-    scene.materials.push_back(Material{name, readEos(m)});
+    Material mat{name, readEos(m), std::nullopt};
+    if (const auto st = m.subTable("strength", false)) mat.strength = parseStrength(*st);
+    scene.materials.push_back(std::move(mat));
   }
   // The tension cut-off is the scene's effect, switched in as every solver switches it.
   scene.materials = resolveMaterials(scene);

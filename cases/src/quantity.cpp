@@ -30,6 +30,10 @@ constexpr std::array<UnitSpec, 6> kPressure{{{"Mbar", units::Mbar},
 constexpr std::array<UnitSpec, 4> kEnergy{
     {{"cm^2/us^2", 1.0}, {"MJ/kg", units::MJPerKg}, {"kJ/kg", 1.0e-5}, {"J/kg", 1.0e-8}}};
 constexpr std::array<UnitSpec, 3> kWall{{{"s", 1.0}, {"min", 60.0}, {"h", 3600.0}}};
+constexpr std::array<UnitSpec, 2> kSpecificHeat{{{"cm^2/us^2/K", 1.0}, {"J/kg/K", 1.0e-8}}};
+constexpr std::array<UnitSpec, 2> kStrainRate{{{"1/us", 1.0}, {"1/s", 1.0e-6}}};
+constexpr std::array<UnitSpec, 3> kPressurePerKelvin{
+    {{"Mbar/K", 1.0}, {"GPa/K", units::GPa}, {"MPa/K", 1.0e-5}}};
 
 std::string_view trim(std::string_view s) {
   const auto b = s.find_first_not_of(" \t");
@@ -56,6 +60,12 @@ std::span<const UnitSpec> unitsOf(Dimension d) {
       return kEnergy;
     case Dimension::WallTime:
       return kWall;
+    case Dimension::SpecificHeat:
+      return kSpecificHeat;
+    case Dimension::StrainRate:
+      return kStrainRate;
+    case Dimension::PressurePerKelvin:
+      return kPressurePerKelvin;
   }
   return {};
 }
@@ -78,6 +88,12 @@ std::string_view dimensionName(Dimension d) {
       return "specific energy";
     case Dimension::WallTime:
       return "wall-clock time";
+    case Dimension::SpecificHeat:
+      return "specific heat";
+    case Dimension::StrainRate:
+      return "strain rate";
+    case Dimension::PressurePerKelvin:
+      return "pressure per kelvin";
   }
   return "?";
 }

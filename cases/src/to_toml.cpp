@@ -3,6 +3,7 @@
 
 #include <span>
 #include <sstream>
+#include <vector>
 
 #include "detail/keys.hpp"
 #include "detail/reader.hpp"
@@ -63,6 +64,20 @@ void writeEos(std::ostringstream& o, const eos::Eos& e) {
   std::visit([&](const auto& params) { writeKeys(o, detail::eosKeys(params), params); }, e);
 }
 
+// Every key of the chosen yield and damage models (no preset: the values are all written).
+void writeStrength(std::ostringstream& o, const std::string& name, const strength::Material& m) {
+  o << "\n[materials." << detail::pathKey(name) << ".strength]\n"
+    << "model = \"" << strength::yieldModelNames()[m.yield.index()] << "\"\n"
+    << "damage = \"" << strength::damageModelNames()[m.damage.index()] << "\"\n";
+  std::vector<detail::KeyRow<strength::Material>> rows;
+  const int model = static_cast<int>(m.yield.index()), damage = static_cast<int>(m.damage.index());
+  for (const auto& r : detail::strengthKeys())
+    if (r.variant < 0 || r.variant == model) rows.push_back(r);
+  for (const auto& r : detail::damageKeys())
+    if (r.variant == damage) rows.push_back(r);
+  writeKeys<strength::Material>(o, rows, m);
+}
+
 struct ShapeWriter {
   std::ostringstream& o;
   void operator()(const Disk& d) const {
@@ -116,6 +131,7 @@ std::string toToml(const Scene& s) {
   for (const Material& m : s.materials) {
     o << "\n[materials." << detail::pathKey(m.name) << "]\n";
     writeEos(o, m.eos);
+    if (m.strength) writeStrength(o, m.name, *m.strength);
   }
   for (const Body& b : s.bodies) {
     o << "\n[[bodies]]\nname = " << tomlString(b.name) << "\nmaterial = ";

@@ -155,6 +155,34 @@ void checkTvdMaterials(const TableReader& root, const Scene& scene, const Source
   }
 }
 
+// Strength and fracture (docs/strength.md): solids only, and with fracture every solid's spall
+// strength stands in for the zero cut-off, so the two cannot both be named.
+void checkStrength(const TableReader& root, const Scene& scene) {
+  const bool fracture = scene.has(Effect::Fracture);
+  if (fracture && scene.has(Effect::TensionCutoff))
+    root.fail("effects",
+              "\"fracture\" replaces the zero cut-off of \"tension_cutoff\" by each material's "
+              "spall_strength: name one of them",
+              "effects without \"tension_cutoff\" (spall_strength = 0 is the zero cut-off)");
+  const auto mats = root.subTable("materials", true);
+  bool any = false;
+  for (const Material& m : scene.materials) {
+    const bool gas = std::holds_alternative<eos::IdealGas>(m.eos);
+    const auto t = mats->subTable(m.name, true);
+    if (m.strength && gas)
+      t->fail("strength", "an ideal gas carries no shear stress and no tension",
+              "a strength table for Tillotson and Mie-Gruneisen materials only");
+    if (!m.strength && !gas && fracture)
+      t->fail("strength",
+              "missing: the effect \"fracture\" needs the spall strength of every solid",
+              "[" + t->path() + ".strength] with spall_strength (a preset, or model and its keys)");
+    any = any || m.strength.has_value();
+  }
+  if (scene.has(Effect::Strength) && !any)
+    root.fail("effects", "\"strength\" is named but no material has a strength table",
+              "[materials.<name>.strength] for the solids");
+}
+
 void checkRiemann(const TableReader& root, const Scene& scene, const Sources& src, double tol) {
   const std::string need = "planar geometry and exactly two rect bodies meeting at x = interface";
   if (scene.geometry != Geometry::Planar)
@@ -309,6 +337,7 @@ void validateScene(const TableReader& root, const Scene& scene, const Sources& s
   if (scene.solver == SolverKind::Tvd) checkTvdMaterials(root, scene, src);
   checkTimeResolution(root, scene);
   checkFeatures(root, scene);
+  checkStrength(root, scene);
   if (scene.solver == SolverKind::Riemann) {
     checkRiemann(root, scene, src, tol);
     checkRiemannSolution(root, scene, src);

@@ -70,6 +70,11 @@ std::span<const KeyRow<eos::Tillotson>> tillotsonKeys();
 std::span<const KeyRow<eos::IdealGas>> idealGasKeys();
 std::span<const KeyRow<eos::MieGruneisen>> mieGruneisenKeys();
 std::span<const KeyRow<Body>> bodyKeys();
+//! [materials.<name>.strength]: the keys of every solid, then per yield model (variant = its
+//! index in strength::YieldModel); damageKeys: per damage model (index in DamageModel).
+std::span<const KeyRow<strength::Material>> strengthKeys();
+std::span<const KeyRow<strength::Material>> damageKeys();
+std::span<const std::string_view> strengthKeyNames();  //!< both tables, in order
 std::span<const KeyRow<SphParams>> sphKeys();
 std::span<const KeyRow<TvdParams>> tvdKeys();
 std::span<const KeyRow<RiemannParams>> riemannKeys();
@@ -92,7 +97,7 @@ std::span<const std::string_view> shapeNames();  //!< in Shape's variant order
 //! The key names of a section, in table order (for unknown-key checks and `--set` paths):
 //! "root", "time", "domain", "domain.boundaries", "bodies", "sph", "tvd", "riemann", "output";
 //! "materials": every key of any [materials.*] table; "materials.<eos>": those of one EOS
-//! (preset, eos, then the EOS's table).
+//! (preset, eos, then the EOS's table); "materials.strength": [materials.<name>.strength].
 std::span<const std::string_view> keyNames(std::string_view section);
 
 //! Reads every key of `rows` from `t` into `s`, in table order, each checked as it is read;

@@ -14,6 +14,8 @@ struct Sources {
 };
 
 void parseMaterials(const TableReader& root, Scene& scene);
+//! [materials.<name>.strength] (parse_strength.cpp).
+strength::Material parseStrength(const TableReader& t);
 void parseBodies(const TableReader& root, Scene& scene, Sources& sources);
 void parseSolverParams(const TableReader& root, Scene& scene);
 void parseOutput(const TableReader& root, Scene& scene);

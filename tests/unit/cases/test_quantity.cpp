@@ -82,8 +82,13 @@ TEST(SceneQuantity, UnitListsStartWithTheInternalUnit) {
   EXPECT_EQ(internalUnit(Dimension::Pressure), "Mbar");
   EXPECT_EQ(internalUnit(Dimension::SpecificEnergy), "cm^2/us^2");
   for (auto d : {Dimension::Length, Dimension::Time, Dimension::Velocity, Dimension::Density,
-                 Dimension::Pressure, Dimension::SpecificEnergy, Dimension::WallTime})
+                 Dimension::Pressure, Dimension::SpecificEnergy, Dimension::WallTime,
+                 Dimension::SpecificHeat, Dimension::StrainRate, Dimension::PressurePerKelvin})
     EXPECT_EQ(unitsOf(d).front().toInternal, 1.0);
+  // The strength units (docs/strength.md): 1 J/(kg K) = 1e-8 cm^2/us^2/K, 1/s = 1e-6 /us.
+  EXPECT_DOUBLE_EQ(*parseQuantity("896 J/kg/K", Dimension::SpecificHeat), 8.96e-6);
+  EXPECT_DOUBLE_EQ(*parseQuantity("1000 1/s", Dimension::StrainRate), 1e-3);
+  EXPECT_DOUBLE_EQ(*parseQuantity("-0.017 GPa/K", Dimension::PressurePerKelvin), -1.7e-4);
   EXPECT_EQ(allowedUnits(Dimension::Length), "cm, mm, m, um");
 }
 

@@ -116,7 +116,7 @@ TEST(SceneDocs, TablesMatchTheParser) {
        {keyTableMarkdown({"root"}), keyTableMarkdown({"time"}), keyTableMarkdown({"domain"}),
         keyTableMarkdown({"materials"}), keyTableMarkdown({"materials.tillotson"}),
         keyTableMarkdown({"materials.ideal_gas"}), keyTableMarkdown({"materials.mie_gruneisen"}),
-        keyTableMarkdown({"bodies"}), keyTableMarkdown({"sph", "tvd", "riemann"}),
+        keyTableMarkdown({"materials.strength"}), keyTableMarkdown({"bodies"}), keyTableMarkdown({"sph", "tvd", "riemann"}),
         keyTableMarkdown({"output"})})
     EXPECT_NE(doc.find(keys), std::string::npos) << "docs/scenes.md lacks:\n" << keys;
 }

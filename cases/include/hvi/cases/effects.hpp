@@ -30,6 +30,12 @@ bool supports(SolverKind s, Effect e);
 //! Mie-Gruneisen EOS switched on exactly when the scene names `tension_cutoff` (the cut-off is
 //! the scene's effect, not a material property). The parser stores this in Scene::materials;
 //! the solvers resolve again, so that a Scene built in code runs alike in all of them.
+//! With a strength table, the temperature model's bulk sound speed is filled from the EOS
+//! (bulkSoundSpeed) where the scene leaves it 0.
 std::vector<Material> resolveMaterials(const Scene& scene);
+
+//! The reference bulk sound speed of an EOS: sqrt(A / rho0) (Tillotson), c0 (Mie-Gruneisen),
+//! 0 for the ideal gas.
+double bulkSoundSpeed(const eos::Eos& e);
 
 }  // namespace hvi::cases

@@ -8,7 +8,18 @@
 namespace hvi::cases {
 
 //! Physical dimension of a scene-file value. WallTime is real (clock) time, not simulated time.
-enum class Dimension { Length, Time, Velocity, Density, Pressure, SpecificEnergy, WallTime };
+enum class Dimension {
+  Length,
+  Time,
+  Velocity,
+  Density,
+  Pressure,
+  SpecificEnergy,
+  WallTime,
+  SpecificHeat,       //!< cm^2/us^2/K (strength: c_v)
+  StrainRate,         //!< 1/us (strength: reference rates)
+  PressurePerKelvin,  //!< Mbar/K (strength: dG/dT)
+};
 
 //! A unit a scene file may write, and the factor that converts a value in it to internal units.
 struct UnitSpec {
@@ -18,7 +29,8 @@ struct UnitSpec {
 
 //! Units allowed for a dimension, the internal one first.
 std::span<const UnitSpec> unitsOf(Dimension d);
-//! Name of the internal unit (cm, us, cm/us, g/cm^3, Mbar, cm^2/us^2, s).
+//! Name of the internal unit (cm, us, cm/us, g/cm^3, Mbar, cm^2/us^2, s, cm^2/us^2/K, 1/us,
+//! Mbar/K).
 std::string_view internalUnit(Dimension d);
 //! "length", "time", ... for messages.
 std::string_view dimensionName(Dimension d);

@@ -11,15 +11,18 @@
 #include "hvi/common/geometry.hpp"
 #include "hvi/common/vec2.hpp"
 #include "hvi/eos/eos.hpp"
+#include "hvi/strength/strength.hpp"
 
 namespace hvi::cases {
 
 // All quantities are in the internal cm-g-us units of common/units.hpp.
 
-//! A named material: its EOS (which carries the reference density rho0).
+//! A named material: its EOS (which carries the reference density rho0) and, for a solid, its
+//! strength ([materials.<name>.strength]; used with the effects strength and fracture).
 struct Material {
   std::string name;
   eos::Eos eos;
+  std::optional<strength::Material> strength = std::nullopt;
   [[nodiscard]] double rho0() const { return eos::referenceDensity(eos); }
 };
 
@@ -90,6 +93,8 @@ enum class Effect {
   EnergyBudget,         //!< per-step kinetic / internal / total energy diagnostics
   MaterialInterfaces,   //!< marker lines (TVD); a single-material scene need not name it
   Features,             //!< debris-cloud features at each snapshot
+  Strength,             //!< deviatoric stress, yield, plastic work (docs/strength.md)
+  Fracture,             //!< spall strength instead of the zero cut-off, damage
 };
 std::string_view toString(Effect e);
 std::optional<Effect> effectFromString(std::string_view s);

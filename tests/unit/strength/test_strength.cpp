@@ -1,0 +1,212 @@
+// The strength library against values computed by hand from the published formulas
+// (docs/strength.md): Steinberg, Cochran and Guinan 1980; Johnson and Cook 1983, 1985; Benz and
+// Asphaug 1995; Wilkins 1964 (radial return).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "hvi/strength/strength.hpp"
+
+namespace hs = hvi::strength;
+
+TEST(StrengthDeviator, TraceZeroAndInvariants) {
+  const hs::Deviator s{2.0, -1.0, 1.0};
+  EXPECT_EQ(s.xx + s.zz + s.tt(), 0.0);
+  // J2 = (4 + 1 + 1) / 2 + 1 = 4; sqrt(3 J2) = sqrt(12).
+  EXPECT_DOUBLE_EQ(hs::secondInvariant(s), 4.0);
+  EXPECT_DOUBLE_EQ(hs::vonMises(s), std::sqrt(12.0));
+  // Uniaxial stress sigma: deviator (2/3, -1/3, -1/3) sigma, von Mises = sigma.
+  EXPECT_NEAR(hs::vonMises({2.0 / 3.0 * 5.0, -1.0 / 3.0 * 5.0, 0.0}), 5.0, 1e-14);
+}
+
+TEST(StrengthJaumann, UniaxialStrainRate) {
+  // dvx/dx = 1: ds_xx = 2G (1 - 1/3) = 4G/3, ds_zz = ds_tt = -2G/3 (uniaxial strain).
+  const double g = 3.0;
+  const hs::Deviator r = hs::jaumannRate({}, {.xx = 1.0}, g);
+  EXPECT_DOUBLE_EQ(r.xx, 4.0);
+  EXPECT_DOUBLE_EQ(r.zz, -2.0);
+  EXPECT_DOUBLE_EQ(r.tt(), -2.0);
+  EXPECT_DOUBLE_EQ(r.xz, 0.0);
+  // Hoop rate only (r-z, v_r / r = 1): ds_tt = 4G/3, ds_xx = ds_zz = -2G/3.
+  const hs::Deviator h = hs::jaumannRate({}, {.hoop = 1.0}, g);
+  EXPECT_DOUBLE_EQ(h.xx, -2.0);
+  EXPECT_DOUBLE_EQ(h.tt(), 4.0);
+}
+
+TEST(StrengthJaumann, RigidRotationTurnsTheStressWithTheBody) {
+  // v = (w z, -w x): a rigid rotation by -w t; uniaxial stress sigma along x turns to
+  // sigma n n^T with n = (1, -w dt): ds_xz/dt = -w sigma, ds_xx/dt = ds_zz/dt = 0 (first order),
+  // and no strain part (G plays no role).
+  const double w = 0.7, sigma = 2.0;
+  const hs::Deviator s{2.0 / 3.0 * sigma, -1.0 / 3.0 * sigma, 0.0};
+  const hs::Deviator r = hs::jaumannRate(s, {.xz = w, .zx = -w}, 5.0);
+  EXPECT_DOUBLE_EQ(r.xx, 0.0);
+  EXPECT_DOUBLE_EQ(r.zz, 0.0);
+  EXPECT_DOUBLE_EQ(r.xz, -w * sigma);
+  // A rotation keeps J2: d(J2)/dt = s : ds/dt = 0 for any s.
+  const hs::Deviator t{0.3, -0.8, 0.45};
+  const hs::Deviator q = hs::jaumannRate(t, {.xz = w, .zx = -w}, 5.0);
+  EXPECT_NEAR(t.xx * q.xx + t.zz * q.zz + t.tt() * q.tt() + 2.0 * t.xz * q.xz, 0.0, 1e-15);
+}
+
+TEST(StrengthReturn, ReturnsToTheSurfaceWithPlasticStrainAndWork) {
+  // sqrt(3 J2) = 2 sqrt(3), Y = sqrt(3): scale 1/2; d eps_p = (2 sqrt3 - sqrt3) / 3G,
+  // work = Y d eps_p = 3 / 3G = 0.1 for G = 10.
+  hs::Deviator s{2.0, -1.0, 1.0};
+  const auto r = hs::radialReturn(s, std::sqrt(3.0), 10.0);
+  EXPECT_DOUBLE_EQ(s.xx, 1.0);
+  EXPECT_DOUBLE_EQ(s.zz, -0.5);
+  EXPECT_DOUBLE_EQ(s.xz, 0.5);
+  EXPECT_NEAR(hs::vonMises(s), std::sqrt(3.0), 1e-14);
+  EXPECT_NEAR(r.plasticStrain, std::sqrt(3.0) / 30.0, 1e-15);
+  EXPECT_NEAR(r.plasticWork, 0.1, 1e-15);
+  // Inside the surface: untouched, no plastic strain.
+  hs::Deviator e{0.1, 0.05, 0.0};
+  const auto n = hs::radialReturn(e, 1.0, 10.0);
+  EXPECT_EQ(e.xx, 0.1);
+  EXPECT_EQ(n.plasticStrain, 0.0);
+  // Zero strength (melt, full damage): the deviator vanishes.
+  hs::Deviator m{2.0, -1.0, 1.0};
+  hs::radialReturn(m, 0.0, 10.0);
+  EXPECT_EQ(hs::vonMises(m), 0.0);
+}
+
+TEST(StrengthReturn, UniaxialStrainYieldsAtTheHugoniotElasticLimitStrain) {
+  // Uniaxial strain eps: s_xx - s_zz = 2 G eps, so yield at 2 G eps = Y. Step the strain in
+  // small increments and check the return holds sqrt(3 J2) = Y after the limit.
+  const double g = 0.276, y = 0.0029, deps = 1e-5;
+  hs::Deviator s;
+  double epsp = 0.0;
+  for (int i = 1; i <= 2000; ++i) {
+    const hs::Deviator r = hs::jaumannRate(s, {.xx = -1.0}, g);
+    s.xx += deps * r.xx;
+    s.zz += deps * r.zz;
+    epsp += hs::radialReturn(s, y, g).plasticStrain;
+    const double eps = i * deps;
+    if (2.0 * g * eps < y * (1.0 - 1e-9)) {
+      EXPECT_EQ(epsp, 0.0) << i;
+    }
+  }
+  EXPECT_NEAR(hs::vonMises(s), y, 1e-15);
+  // Total deviatoric equivalent strain 2/3 * 0.02 beyond the elastic part Y / 3G... in
+  // uniaxial strain d eps_p = (2/3) d eps after yield: eps_p = 2/3 (0.02 - Y / 2G).
+  EXPECT_NEAR(epsp, 2.0 / 3.0 * (0.02 - y / (2.0 * g)), 1e-9);
+}
+
+TEST(StrengthYield, JohnsonCookByHand) {
+  // OFHC copper (JC 1983) at eps_p 0.1, 1000/s, T* = 0.5:
+  // (90 + 292 * 0.1^0.31) (1 + 0.025 ln 1000) (1 - 0.5^1.09) = 233.0154 * 1.172694 * 0.530239
+  // = 144.8908 MPa.
+  const auto* cu = hs::findPreset("copper_ofhc");
+  ASSERT_NE(cu, nullptr);
+  const auto& jc = std::get<hs::JohnsonCook>(cu->material.yield);
+  const double t = 294.0 + 0.5 * (1356.0 - 294.0);
+  EXPECT_NEAR(jc.yield({.plasticStrain = 0.1, .strainRate = 1e-3, .temperature = t}), 1.4489075e-3,
+              1e-9);
+  // Below the reference rate no softening; at room temperature and eps_p = 0: A = 90 MPa.
+  EXPECT_DOUBLE_EQ(jc.yield({.strainRate = 1e-9, .temperature = 294.0}), 90e-5);
+  // At and above the melt temperature: zero.
+  EXPECT_EQ(jc.yield({.plasticStrain = 0.3, .temperature = 1356.0}), 0.0);
+  EXPECT_EQ(jc.yield({.plasticStrain = 0.3, .temperature = 2000.0}), 0.0);
+}
+
+TEST(StrengthYield, SteinbergGuinanByHand) {
+  // 6061-T6 (Steinberg 1991) at eps_p 0.05, P 10 GPa, eta 1.1, T 500 K:
+  // hardening 0.29 (1 + 125 * 0.05)^0.1 = 0.353463 GPa < Ymax;
+  // G = 27.6 + 1.8 * 10 / 1.1^(1/3) - 0.0170 * 200 = 41.63713 GPa; Y = 0.353463 * G / 27.6.
+  const auto& sg = std::get<hs::SteinbergGuinan>(hs::findPreset("al6061_t6")->material.yield);
+  const hs::YieldInput in{
+      .plasticStrain = 0.05, .pressure = 0.1, .temperature = 500.0, .compression = 1.1};
+  EXPECT_NEAR(sg.shearModulus(0.1, 500.0, 1.1), 0.4163713, 1e-7);
+  EXPECT_NEAR(sg.yield(in), 5.333392e-3, 1e-9);
+  // Work hardening capped at Ymax: (1 + 125 * 100)^0.1 * 0.29 = 0.746 GPa > 0.68.
+  EXPECT_NEAR(sg.yield({.plasticStrain = 100.0}), 0.68e-2, 1e-15);
+  // Reference state: Y0.
+  EXPECT_NEAR(sg.yield({}), 0.29e-2, 1e-15);
+}
+
+TEST(StrengthYield, SteinbergGuinanMeltLimit) {
+  // T_m(1.1) = 1220 exp(3 (1 - 1/1.1)) 1.1^(2 (1.97 - 1.5 - 1/3)) = 1644.818 K.
+  const auto& sg = std::get<hs::SteinbergGuinan>(hs::findPreset("al6061_t6")->material.yield);
+  EXPECT_NEAR(sg.meltTemperature(1.1), 1644.8177, 1e-3);
+  EXPECT_DOUBLE_EQ(sg.meltTemperature(1.0), 1220.0);
+  EXPECT_GT(sg.yield({.temperature = 1644.0, .compression = 1.1}), 0.0);
+  EXPECT_EQ(sg.yield({.temperature = 1644.9, .compression = 1.1}), 0.0);
+  // At eta = 1 it melts at T_m0, not before.
+  EXPECT_GT(sg.yield({.temperature = 1219.0}), 0.0);
+  EXPECT_EQ(sg.yield({.temperature = 1220.0}), 0.0);
+}
+
+TEST(StrengthThermal, TemperatureFromEnergyWithColdEnergySubtracted) {
+  // c_v 896 J/(kg K), c0 5.35 km/s. eta 1: T = 300 + e / c_v; e = 1e-3 cm^2/us^2 (100 kJ/kg)
+  // gives 300 + 111.607 K. eta 1.2: e_c = 0.535^2 (ln 1.2 + 1/1.2 - 1) = 4.48082e-3, so
+  // e = 5e-3 gives 300 + (5e-3 - 4.48082e-3) / 8.96e-6 = 357.944 K.
+  const hs::Thermal th{.cv = 8.96e-6, .t0 = 300.0, .bulkSoundSpeed = 0.535};
+  EXPECT_NEAR(th.temperature(1.0, 1e-3), 300.0 + 1e-3 / 8.96e-6, 1e-9);
+  EXPECT_NEAR(th.coldEnergy(1.2), 4.480821e-3, 1e-9);
+  EXPECT_NEAR(th.temperature(1.2, 5e-3), 357.94409, 1e-4);
+  // The cold energy is positive in tension too, and never cools below T0.
+  EXPECT_GT(th.coldEnergy(0.9), 0.0);
+  EXPECT_EQ(th.temperature(1.2, 0.0), 300.0);
+}
+
+TEST(StrengthDamage, GradyKippGrowthAndActivation) {
+  // d(D^1/3)/dt = c_g / R: c_g 0.24 cm/us, R 0.01 cm, dt 0.01 us: D^1/3 = 0.24, 0.48 after two.
+  double d = hs::GradyKipp::grow(0.0, 0.01, 0.24, 0.01);
+  EXPECT_NEAR(d, 0.013824, 1e-15);
+  d = hs::GradyKipp::grow(d, 0.01, 0.24, 0.01);
+  EXPECT_NEAR(d, 0.110592, 1e-14);
+  // Full failure after R / c_g = 0.0417 us, capped at 1.
+  EXPECT_EQ(hs::GradyKipp::grow(d, 0.05, 0.24, 0.01), 1.0);
+  // Weakest flaw of V = 1e-6 cm^3 with k = 1e20 cm^-3, m = 9: (1e14)^(-1/9) = 0.0278256.
+  const hs::GradyKipp gk{.k = 1e20, .m = 9.0};
+  EXPECT_NEAR(gk.activationStrain(1e-6), 0.027825594, 1e-9);
+  // A bigger volume holds a weaker flaw (Weibull size effect).
+  EXPECT_LT(gk.activationStrain(1e-3), gk.activationStrain(1e-6));
+}
+
+TEST(StrengthDamage, JohnsonCookFailureStrainByHand) {
+  // Copper (JC 1985), uniaxial tension (sigma* = 1/3), 1000/s, T* = 0.5:
+  // (0.54 + 4.89 exp(-3.03/3)) (1 + 0.014 ln 1000) (1 + 1.12 * 0.5) = 3.970971.
+  const auto& f = std::get<hs::JohnsonCookFailure>(hs::findPreset("copper_ofhc")->material.damage);
+  EXPECT_NEAR(f.failureStrain(1.0 / 3.0, 1e-3, 0.5), 3.970971, 1e-6);
+}
+
+TEST(StrengthDamage, PrincipalStressAndDamagedPressure) {
+  // s = (1, -0.5, 0.5), P = 0.2: mean 0.25, radius sqrt(0.5625 + 0.25) = 0.901388; tt = -0.5.
+  EXPECT_NEAR(hs::maxPrincipalStress({1.0, -0.5, 0.5}, 0.2), 0.25 + std::sqrt(0.8125) - 0.2, 1e-15);
+  // Hoop largest: s = (-1, -1, 0) has tt = 2.
+  EXPECT_DOUBLE_EQ(hs::maxPrincipalStress({-1.0, -1.0, 0.0}, 0.5), 1.5);
+  // Tension limited by the spall strength, then scaled by 1 - D; compression untouched.
+  EXPECT_DOUBLE_EQ(hs::effectivePressure(-0.03, 0.5, 0.02), -0.01);
+  EXPECT_DOUBLE_EQ(hs::effectivePressure(-0.01, 0.0, 0.02), -0.01);
+  EXPECT_DOUBLE_EQ(hs::effectivePressure(-0.01, 1.0, 0.02), 0.0);
+  EXPECT_DOUBLE_EQ(hs::effectivePressure(0.4, 1.0, 0.02), 0.4);
+}
+
+TEST(StrengthModuli, LongitudinalSpeedAndYoungsModulus) {
+  // K = 0.72, G = 0.276, rho = 2.7: c_L^2 = K/rho + 4G/(3 rho).
+  const double k = 0.72, g = 0.276, rho = 2.7;
+  EXPECT_NEAR(hs::longitudinalSoundSpeed(std::sqrt(k / rho), g, rho),
+              std::sqrt((k + 4.0 * g / 3.0) / rho), 1e-15);
+  // E = 9KG / (3K + G); nu = 0.3 gives E = 2G(1 + nu) with K = 2G(1 + nu) / (3(1 - 2 nu)).
+  const double nu = 0.3, kk = 2.0 * g * (1.0 + nu) / (3.0 * (1.0 - 2.0 * nu));
+  EXPECT_NEAR(hs::youngsModulus(kk, g), 2.0 * g * (1.0 + nu), 1e-15);
+}
+
+TEST(StrengthPresets, EveryPresetIsComplete) {
+  ASSERT_EQ(hs::presets().size(), 6u);
+  for (const char* name :
+       {"al6061_t6", "al2017_t4", "al2024_t3", "copper_ofhc", "steel_4340", "tungsten"}) {
+    const auto* p = hs::findPreset(name);
+    ASSERT_NE(p, nullptr) << name;
+    EXPECT_GT(p->material.shearModulus, 0.0) << name;
+    EXPECT_GT(p->material.thermal.cv, 0.0) << name;
+    // Reference-state yield between 50 MPa and 2 GPa (metals), in Mbar.
+    const double y = hs::yieldStress(p->material.yield, {.temperature = 294.0});
+    EXPECT_GT(y, 50e-5) << name;
+    EXPECT_LT(y, 2e-2) << name;
+    EXPECT_FALSE(p->source.empty());
+  }
+  EXPECT_EQ(hs::findPreset("unobtainium"), nullptr);
+}
