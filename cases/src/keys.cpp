@@ -21,7 +21,7 @@ constexpr std::array<KeyRow<Scene>, 2> kTime{{
      .docValue = "**required**, time > start", .required = true},
 }};
 
-constexpr std::array<KeyRow<SphParams>, 10> kSph{{
+constexpr std::array<KeyRow<SphParams>, 11> kSph{{
     {.key = "spacing", .kind = K::Quantity, HVI_KEY_FIELD(SphParams, spacing),
      .ok = [](double v) { return v > 0.0; }, .problem = "must be > 0", .allowed = "a length > 0",
      .docValue = "length > 0, particle spacing dx", .docDefault = "`0.01 cm`"},
@@ -33,6 +33,11 @@ constexpr std::array<KeyRow<SphParams>, 10> kSph{{
     {.key = "lattice", .kind = K::Choice, HVI_KEY_FIELD(SphParams, lattice),
      .choices = latticeNames, .docValue = "`\"square\"`, `\"hexagonal\"`",
      .docDefault = "`\"square\"`"},
+    // docs/sph.md, "Energy": the study's symmetric form stays available for reproduction.
+    {.key = "energy", .kind = K::Choice, HVI_KEY_FIELD(SphParams, energy),
+     .choices = energyFormNames,
+     .docValue = "`\"compatible\"` (Owen 2014, exact total energy), `\"symmetric\"` (the study's)",
+     .docDefault = "`\"compatible\"`"},
     {.key = "alpha", .kind = K::Number, HVI_KEY_FIELD(SphParams, alpha),
      .ok = [](double v) { return v >= 0.0; }, .problem = "must be >= 0", .allowed = "alpha >= 0",
      .docValue = ">= 0, Monaghan viscosity alpha_Pi", .docDefault = "1.0"},

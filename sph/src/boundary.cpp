@@ -74,6 +74,14 @@ void Boundaries::refreshGhosts(PairArrays& a, std::size_t n) const {
   }
 }
 
+void Boundaries::mirrorGhostVectors(double* vx, double* vz, std::size_t n) const {
+  for (std::size_t g = 0; g < parent_.size(); ++g) {
+    const std::size_t p = static_cast<std::size_t>(parent_[g]);
+    vx[n + g] = transform_[g].sx * vx[p];
+    vz[n + g] = transform_[g].sz * vz[p];
+  }
+}
+
 bool Boundaries::outflowed(double x, double z) const {
   return (outflow_[0] && x < domain_.xmin) || (outflow_[1] && x > domain_.xmax) ||
          (outflow_[2] && z < domain_.zmin) || (outflow_[3] && z > domain_.zmax);

@@ -1,6 +1,6 @@
 //! @file Pair-loop drivers: threading, memory layout and the r-z normalisation.
-#include "detail/parallel.hpp"
 #include "detail/passes.hpp"
+#include "detail/parallel.hpp"
 
 #include <algorithm>
 
@@ -12,14 +12,14 @@ namespace hvi::sph::detail {
 namespace {
 
 inline PairState load(const PairArrays& a, std::size_t i) {
-  return {a.x[i],  a.z[i],  a.vx[i], a.vz[i], a.rho[i], a.c[i],
-          a.h[i],  a.mu[i], a.rw[i], a.q[i],  a.lam[i]};
+  return {a.x[i], a.z[i],  a.vx[i], a.vz[i], a.rho[i], a.c[i],
+          a.h[i], a.mu[i], a.rw[i], a.q[i],  a.lam[i]};
 }
 
 // Each particle gathers over its own list: a pair is evaluated from both ends, which doubles
 // the arithmetic but needs no atomics or per-thread copies, and makes every sum's order fixed
 // (bit-for-bit reproducible at any thread count).
-template <class K, bool RZ, bool Viscous, bool Cached>
+template <class K, bool RZ, bool Viscous, bool Cached, bool Compatible>
 void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
                const MonaghanViscosity& visc, const AxisCorrection* axis, const Rates& out) {
   const std::size_t stride = list.stride;
@@ -34,6 +34,10 @@ void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list
     const int oi = a.obj[i];
     const double ih2i = 1.0 / (A.h * A.h);
     double sax = 0.0, saz = 0.0, sde = 0.0, sdrho = 0.0, shoop = 0.0, phi = 0.0;
+    // The compatible energy's pair data (half state only): w_ij times i's pair acceleration.
+    constexpr bool kPairs = Compatible && !Cached;
+    double* pwx = kPairs ? out.pairWx + i * stride : nullptr;
+    double* pwz = kPairs ? out.pairWz + i * stride : nullptr;
     for (int k = 0; k < cnt; ++k) {
       const std::size_t j = static_cast<std::size_t>(nb[k]);
       // Within an object h is constant, so h_ij = h_i for most pairs: skip the division.
@@ -50,10 +54,17 @@ void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list
         const double dx = A.x - a.x[j], dz = A.z - a.z[j];
         w = K::value(dx * dx + dz * dz, 0.5 * (A.h + hj), ih2);
       }
-      if (w == 0.0) continue;
-      const PairResult r = pairTerms<K, RZ, Viscous>(A, load(a, j), w, ih2, visc);
+      if (w == 0.0) {
+        if constexpr (kPairs) pwx[k] = pwz[k] = 0.0;
+        continue;
+      }
+      const PairResult r = pairTerms<K, RZ, Viscous, Compatible>(A, load(a, j), w, ih2, visc);
       sax += r.ax;
       saz += r.az;
+      if constexpr (kPairs) {
+        pwx[k] = r.share * r.ax;
+        pwz[k] = r.share * r.az;
+      }
       sde += r.de;
       // The continuity rate, like the summation density, sums over i's own object.
       if constexpr (Cached) {
@@ -69,7 +80,9 @@ void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list
       const double hoop = (shoop + A.mu * A.q * wii) * (*axis)(A.rw, A.h);
       const double inv = 1.0 / A.rw;
       const double sgn = A.x >= 0.0 ? 1.0 : -1.0;  // a particle briefly past the axis
-      out.ax[i] = sax * inv + sgn * hoop * inv * inv;
+      const double hoopAx = sgn * hoop * inv * inv;
+      out.ax[i] = sax * inv + hoopAx;
+      if constexpr (kPairs) out.hoopAx[i] = hoopAx;
       out.az[i] = saz * inv;
       out.de[i] = sde * inv + A.lam * hoop * inv;
       if constexpr (Cached) out.drho[i] = sdrho + A.mu * A.lam * wii;
@@ -83,37 +96,69 @@ void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list
   }
 }
 
-template <class K, bool RZ, bool Viscous>
+template <class K, bool RZ, bool Viscous, bool Compatible>
 ForcePass pick(bool cached) {
-  return cached ? &forcePass<K, RZ, Viscous, true> : &forcePass<K, RZ, Viscous, false>;
+  return cached ? &forcePass<K, RZ, Viscous, true, Compatible>
+                : &forcePass<K, RZ, Viscous, false, Compatible>;
+}
+
+template <class K, bool RZ, bool Viscous>
+ForcePass pick(bool compatible, bool cached) {
+  return compatible ? pick<K, RZ, Viscous, true>(cached) : pick<K, RZ, Viscous, false>(cached);
 }
 
 template <class K, bool RZ>
-ForcePass pick(bool viscous, bool cached) {
-  return viscous ? pick<K, RZ, true>(cached) : pick<K, RZ, false>(cached);
+ForcePass pick(bool viscous, bool compatible, bool cached) {
+  return viscous ? pick<K, RZ, true>(compatible, cached) : pick<K, RZ, false>(compatible, cached);
 }
 
 template <class K>
-ForcePass pick(bool rz, bool viscous, bool cached) {
-  return rz ? pick<K, true>(viscous, cached) : pick<K, false>(viscous, cached);
+ForcePass pick(bool rz, bool viscous, bool compatible, bool cached) {
+  return rz ? pick<K, true>(viscous, compatible, cached)
+            : pick<K, false>(viscous, compatible, cached);
 }
 
 template <class K>
 void listPass(const PairArrays& a, std::size_t nReal, double radiusFactor, CellGrid& grid,
               NeighbourList& list, double* rhoOut) {
   if (rhoOut)
-    buildList<K, true>(a.x.data(), a.z.data(), a.h.data(), a.mu.data(), a.obj.data(),
-                       a.size(), nReal, radiusFactor, grid, list, rhoOut);
+    buildList<K, true>(a.x.data(), a.z.data(), a.h.data(), a.mu.data(), a.obj.data(), a.size(),
+                       nReal, radiusFactor, grid, list, rhoOut);
   else
-    buildList<K, false>(a.x.data(), a.z.data(), a.h.data(), a.mu.data(), a.obj.data(),
-                        a.size(), nReal, radiusFactor, grid, list, nullptr);
+    buildList<K, false>(a.x.data(), a.z.data(), a.h.data(), a.mu.data(), a.obj.data(), a.size(),
+                        nReal, radiusFactor, grid, list, nullptr);
 }
 
 }  // namespace
 
-ForcePass selectForcePass(cases::Kernel kernel, bool rz, bool viscous, bool cached) {
-  return kernel == cases::Kernel::Gaussian ? pick<GaussianKernel>(rz, viscous, cached)
-                                           : pick<CubicSplineKernel>(rz, viscous, cached);
+ForcePass selectForcePass(cases::Kernel kernel, bool rz, bool viscous, bool compatible,
+                          bool cached) {
+  return kernel == cases::Kernel::Gaussian
+             ? pick<GaussianKernel>(rz, viscous, compatible, cached)
+             : pick<CubicSplineKernel>(rz, viscous, compatible, cached);
+}
+
+void compatibleEnergy(const NeighbourList& list, std::size_t nReal, const double* pairWx,
+                      const double* pairWz, const double* dax, const double* daz, const double* rw,
+                      const double* hoopAx, double halfDt, double* de) {
+  const std::size_t stride = list.stride;
+  const long nr = static_cast<long>(nReal);
+#pragma omp parallel for schedule(static) if (nr > kParallelPairs)
+  for (long il = 0; il < nr; ++il) {
+    const std::size_t i = static_cast<std::size_t>(il);
+    const int* nb = list.index.data() + i * stride;
+    const double* wx = pairWx + i * stride;
+    const double* wz = pairWz + i * stride;
+    const double dxi = dax[i], dzi = daz[i];
+    double s = 0.0;
+    for (int k = 0; k < list.count[i]; ++k) {
+      const std::size_t j = static_cast<std::size_t>(nb[k]);
+      s += wx[k] * (dxi - dax[j]) + wz[k] * (dzi - daz[j]);
+    }
+    double corr = s / rw[i];
+    if (hoopAx) corr += hoopAx[i] * dxi;
+    de[i] -= halfDt * corr;
+  }
 }
 
 ListPass selectListPass(cases::Kernel kernel) {

@@ -25,8 +25,8 @@ void validate(const cases::Scene& scene) {
         scene.path, scene.domain.xmin));
   if (scene.bodies.empty()) throw InputError(scene.path + ": SPH: the scene has no bodies");
   if (!(scene.sph.alpha >= 0.0) || !(scene.sph.beta >= 0.0))
-    throw InputError(fmt::format("{}: sph.alpha = {} and sph.beta = {} must be >= 0",
-                                 scene.path, scene.sph.alpha, scene.sph.beta));
+    throw InputError(fmt::format("{}: sph.alpha = {} and sph.beta = {} must be >= 0", scene.path,
+                                 scene.sph.alpha, scene.sph.beta));
 }
 
 // Validated before the fill, so that a scene SPH cannot run gets the solver's message.
@@ -49,6 +49,7 @@ StepperConfig stepperConfig(const cases::Scene& scene) {
   cfg.kernel = scene.sph.kernel;
   cfg.viscosity = scene.has(cases::Effect::ArtificialViscosity);
   cfg.visc = {scene.sph.alpha, scene.sph.beta};
+  cfg.energy = scene.sph.energy;
   cfg.cfl = scene.sph.cfl;
   cfg.domain = scene.domain;
   cfg.time = scene.tStart;

@@ -20,8 +20,9 @@ Stepper::Impl::Impl(const ParticleSystem& ps, std::vector<eos::Eos> mats, Steppe
     : cfg(std::move(config)), materials(std::move(mats)), bounds(cfg.domain, cfg.geometry) {
   rz = cfg.geometry == Geometry::Axisymmetric;
   if (rz) axis = std::make_unique<detail::AxisCorrection>(cfg.kernel);
-  passCached = detail::selectForcePass(cfg.kernel, rz, cfg.viscosity, true);
-  passFresh = detail::selectForcePass(cfg.kernel, rz, cfg.viscosity, false);
+  compatible = cfg.energy == cases::EnergyForm::Compatible;
+  passCached = detail::selectForcePass(cfg.kernel, rz, cfg.viscosity, compatible, true);
+  passFresh = detail::selectForcePass(cfg.kernel, rz, cfg.viscosity, compatible, false);
   passList = detail::selectListPass(cfg.kernel);
   if (!(cfg.cfl > 0.0)) throw InputError(fmt::format("sph.cfl = {} must be > 0", cfg.cfl));
   // A particle moves at most (cfl/2) h_i in the half step (dt <= cfl h_i / |v_i|), so a pair
@@ -31,8 +32,8 @@ Stepper::Impl::Impl(const ParticleSystem& ps, std::vector<eos::Eos> mats, Steppe
   n = ps.size();
   for (int k : ps.material)
     if (k < 0 || k >= static_cast<int>(materials.size()))
-      throw InputError(fmt::format("particle material {} is not one of the {} materials", k,
-                                   materials.size()));
+      throw InputError(
+          fmt::format("particle material {} is not one of the {} materials", k, materials.size()));
   a.resize(n);
   forEachState(*this, [&ps](auto member, auto& v) { v = ps.*member; });
   t = cfg.time;
@@ -89,8 +90,7 @@ void Stepper::Impl::checkState(const char* stage) const {
   throw SimulationError(fmt::format(
       "SPH {} at step {}, t = {} us: particle {} of object '{}' has x = {}, z = {} cm, "
       "v = ({}, {}) cm/us, rho = {} g/cm^3, e = {} cm^2/us^2, P = {} Mbar, m = {} g",
-      stage, steps, t, id[i], obj, a.x[i], a.z[i], a.vx[i], a.vz[i], a.rho[i], e[i], a.p[i],
-      m[i]));
+      stage, steps, t, id[i], obj, a.x[i], a.z[i], a.vx[i], a.vz[i], a.rho[i], e[i], a.p[i], m[i]));
 }
 
 void Stepper::Impl::corrector() {
@@ -103,6 +103,25 @@ void Stepper::Impl::corrector() {
   checkState("corrector (summation density)");
   deriveRates();
   bounds.refreshGhosts(a, n);
+}
+
+void Stepper::Impl::compatibleRemainder(double half) {
+  // docs/sph.md, "Energy": the change of acceleration over the step, on ghosts as on their
+  // parents (mirrored), is what the midpoint velocity adds to the half-state pair work.
+  const std::size_t total = a.size();
+  if (dax.size() < total) {
+    dax.resize(total);
+    daz.resize(total);
+  }
+  const long nl = static_cast<long>(n);
+#pragma omp parallel for schedule(static) if (nl > detail::kParallelElements)
+  for (long i = 0; i < nl; ++i) {
+    dax[i] = ax1[i] - ax0[i];
+    daz[i] = az1[i] - az0[i];
+  }
+  bounds.mirrorGhostVectors(dax.data(), daz.data(), n);
+  detail::compatibleEnergy(list, n, pairWx.data(), pairWz.data(), dax.data(), daz.data(),
+                           a.rw.data(), rz ? hoopAx.data() : nullptr, half, de1.data());
 }
 
 double Stepper::Impl::particleTimeStep(std::size_t i, bool* byAcceleration) const {
@@ -209,8 +228,12 @@ double Stepper::step(double tStop) {
   // Predictor: half step with the rates of state n; density from the continuity equation.
 #pragma omp parallel for schedule(static) if (nl > detail::kParallelElements)
   for (long i = 0; i < nl; ++i) {
-    s.x0[i] = a.x[i]; s.z0[i] = a.z[i]; s.vx0[i] = a.vx[i]; s.vz0[i] = a.vz[i];
-    s.e0[i] = s.e[i]; s.rho0[i] = a.rho[i];
+    s.x0[i] = a.x[i];
+    s.z0[i] = a.z[i];
+    s.vx0[i] = a.vx[i];
+    s.vz0[i] = a.vz[i];
+    s.e0[i] = s.e[i];
+    s.rho0[i] = a.rho[i];
     a.x[i] += half * a.vx[i];
     a.z[i] += half * a.vz[i];
     a.vx[i] += half * s.ax0[i];
@@ -218,16 +241,28 @@ double Stepper::step(double tStop) {
     s.e[i] += half * s.de0[i];
     a.rho[i] += half * s.drho0[i];
   }
-  detail::evaluateEos(s.materials, s.mat.data(), a.rho.data(), s.e.data(), a.p.data(),
-                      a.c.data(), s.n);
+  detail::evaluateEos(s.materials, s.mat.data(), a.rho.data(), s.e.data(), a.p.data(), a.c.data(),
+                      s.n);
   s.deriveWeights();
   s.checkState("predictor (continuity density)");
   s.deriveRates();
   s.bounds.refreshGhosts(a, s.n);
-  const detail::Rates ratesHalf{s.ax1.data(), s.az1.data(), s.de1.data(), nullptr, nullptr};
+  detail::Rates ratesHalf{s.ax1.data(), s.az1.data(), s.de1.data(), nullptr, nullptr};
+  if (s.compatible) {
+    // Grows only with the list's stride (set by the corrector's list build).
+    const std::size_t entries = s.n * s.list.stride;
+    if (s.pairWx.size() < entries) {
+      s.pairWx.resize(entries);
+      s.pairWz.resize(entries);
+    }
+    ratesHalf.pairWx = s.pairWx.data();
+    ratesHalf.pairWz = s.pairWz.data();
+    ratesHalf.hoopAx = s.rz ? s.hoopAx.data() : nullptr;
+  }
   s.passFresh(a, s.n, s.list, s.cfg.visc, s.axis.get(), ratesHalf);
+  if (s.compatible) s.compatibleRemainder(half);
 
-  // Full step with the half-state rates (midpoint rule: second order).
+    // Full step with the half-state rates (midpoint rule: second order).
 #pragma omp parallel for schedule(static) if (nl > detail::kParallelElements)
   for (long i = 0; i < nl; ++i) {
     a.x[i] = s.x0[i] + dt * a.vx[i];

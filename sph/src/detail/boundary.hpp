@@ -22,6 +22,9 @@ class Boundaries {
   std::size_t makeGhosts(PairArrays& a, std::size_t n, double margin);
   //! Copies the parents' current values into the ghosts made by the last makeGhosts.
   void refreshGhosts(PairArrays& a, std::size_t n) const;
+  //! Sets the ghost entries [n, n + ghosts) of a vector field (vx, vz) to their parents',
+  //! mirrored as velocities are.
+  void mirrorGhostVectors(double* vx, double* vz, std::size_t n) const;
   [[nodiscard]] std::size_t ghostCount() const { return parent_.size(); }
 
   //! True if (x, z) lies beyond an outflow side of the domain.
@@ -32,9 +35,9 @@ class Boundaries {
 
  private:
   struct Mirror {
-    int axis;     // 0: plane x = pos, 1: plane z = pos
+    int axis;  // 0: plane x = pos, 1: plane z = pos
     double pos;
-    bool lower;   // the domain lies at coordinates >= pos
+    bool lower;  // the domain lies at coordinates >= pos
   };
   struct Transform {
     double sx, ox, sz, oz;  // x' = sx x + ox, z' = sz z + oz

@@ -17,6 +17,12 @@ struct Rates {
   double* de;
   double* drho;  //!< continuity rate (cached pass only)
   double* phi;   //!< most negative viscosity phi_ij of the particle (cached pass only)
+  // Compatible energy, half-state pass only (else null): per list entry (row i, slot k) the
+  // pair acceleration summand of i times w_ij, before the division by r_i; per particle the
+  // hoop acceleration (r-z).
+  double* pairWx = nullptr;
+  double* pairWz = nullptr;
+  double* hoopAx = nullptr;
 };
 
 //! Momentum, energy (and, for the cached pass, continuity) rates of the real particles
@@ -26,10 +32,22 @@ struct Rates {
 //! The continuity rate sums over the particle's own object only, as the summation density of
 //! the corrector does (momentum and energy always sum over every pair).
 //! `axis` (r-z only, may be null in planar) corrects the hoop term near the axis.
+//! `compatible`: the energy rate is each particle's own share of its pairs' work (docs/sph.md,
+//! "Energy"), and the half-state pass also fills out.pairWx, pairWz (and hoopAx in r-z).
 using ForcePass = void (*)(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
                            const MonaghanViscosity& visc, const AxisCorrection* axis,
                            const Rates& out);
-ForcePass selectForcePass(cases::Kernel kernel, bool rz, bool viscous, bool cached);
+ForcePass selectForcePass(cases::Kernel kernel, bool rz, bool viscous, bool compatible,
+                          bool cached);
+
+//! The compatible energy's time-discrete remainder (docs/sph.md, "Energy"): with
+//! da = a^{n+1/2} - a^n per point (ghosts mirrored), subtracts from de (the half-state rate)
+//!   (dt/2) [ (1/r_i) sum_j w_ij a_ij . (da_i - da_j) + a_hoop,i da_x,i ]
+//! so that the step's internal-energy change is exactly minus its kinetic-energy change.
+//! `hoopAx` is null in planar geometry (rw = 1 there).
+void compatibleEnergy(const NeighbourList& list, std::size_t nReal, const double* pairWx,
+                      const double* pairWz, const double* dax, const double* daz, const double* rw,
+                      const double* hoopAx, double halfDt, double* de);
 
 //! Builds the neighbour lists of the real particles among the a.size() points and, if
 //! `rhoOut` is not null, the summation density of the real particles into it (over the
@@ -38,7 +56,7 @@ using ListPass = void (*)(const PairArrays& a, std::size_t nReal, double radiusF
                           CellGrid& grid, NeighbourList& list, double* rhoOut);
 ListPass selectListPass(cases::Kernel kernel);
 
-double kernelSupport(cases::Kernel kernel);  //!< in units of h
+double kernelSupport(cases::Kernel kernel);         //!< in units of h
 double kernelSelf(cases::Kernel kernel, double h);  //!< W(0, h)
 
 }  // namespace hvi::sph::detail

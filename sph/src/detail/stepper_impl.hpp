@@ -19,6 +19,8 @@ struct Stepper::Impl {
   void deriveWeights();      // rw, mu of the reals from their positions and masses
   void deriveRates();        // q, lam of the reals from P, rho, v
   void checkState(const char* stage) const;
+  //! Compatible energy: completes de1 (the half-state rate) with the step's remainder.
+  void compatibleRemainder(double half);
   std::string objectName(std::size_t i) const;  // of real particle i, for diagnostics
   void removeOutflow();
   double timeStep() const;   // CFL limit from the rates of the cached pass
@@ -49,7 +51,7 @@ struct Stepper::Impl {
   // Sizes the step work arrays to the n real particles (never stored: each step rewrites them).
   void resizeWork() {
     for (auto* v : {&x0, &z0, &vx0, &vz0, &e0, &rho0, &ax0, &az0, &de0, &drho0, &phi0, &ax1, &az1,
-                    &de1})
+                    &de1, &hoopAx})
       v->resize(n);
     keep.resize(n);
   }
@@ -62,6 +64,7 @@ struct Stepper::Impl {
   std::unique_ptr<detail::AxisCorrection> axis;  // r-z only
   double radiusFactor = 0.0;   // list radius / h_ij: kernel support + skin
   bool rz = false;
+  bool compatible = false;     // cfg.energy == Compatible
 
   std::size_t n = 0;           // real particles
   detail::PairArrays a;        // reals, then ghosts
@@ -72,6 +75,9 @@ struct Stepper::Impl {
   // Step work arrays (reals only), sized once; the step loop allocates nothing.
   std::vector<double> x0, z0, vx0, vz0, e0, rho0;
   std::vector<double> ax0, az0, de0, drho0, phi0, ax1, az1, de1;
+  // Compatible energy: hoop acceleration (reals), a^{n+1/2} - a^n (reals and ghosts), and per
+  // list entry w_ij times the pair acceleration summand (docs/sph.md, "Energy").
+  std::vector<double> hoopAx, dax, daz, pairWx, pairWz;
   std::vector<unsigned char> keep;
 
   CellGrid grid;

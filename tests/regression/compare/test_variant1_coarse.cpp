@@ -36,11 +36,14 @@ TEST(Variant1Coarse, BothSolversReachTheEndAndCompare) {
   const auto sph = readJson(root / "sph" / "summary.json");
   EXPECT_EQ(sph["status"], "completed");
   EXPECT_DOUBLE_EQ(sph["final_time_us"].get<double>(), 7.2);
-  // SPH: masses are fixed per particle (bitwise), and the pair sums exchange energy
-  // antisymmetrically, so only the time integration changes the total: the hard-case bound 5e-3
-  // (docs/hard_cases.md). A particle thrown by a singular EOS state shows up here first.
-  EXPECT_EQ(sph["conservation"]["mass_rel_error"].get<double>(), 0.0);
-  EXPECT_LE(std::abs(sph["conservation"]["energy_rel_error"].get<double>()), 5e-3);
+  // SPH: masses are fixed per particle (bitwise); ~0.5% of the mass leaves through the outflow
+  // sides, and the total is the in-domain sum plus the outflow sum, so it is exact up to the
+  // order of the additions (measured 0 and -1.2e-16; the hard cases allow 1e-12). The compatible
+  // energy (the default, docs/sph.md) conserves total energy to round-off (measured 1.8e-15;
+  // the study's symmetric form drifts by O(dt^2), 4.7e-6 here, within the hard-case bound 5e-3).
+  // A particle thrown by a singular EOS state shows up here first.
+  EXPECT_LE(std::abs(sph["conservation"]["mass_rel_error"].get<double>()), 1e-14);
+  EXPECT_LE(std::abs(sph["conservation"]["energy_rel_error"].get<double>()), 1e-12);
 
   CompareCliOptions o;
   o.time = 7.2;

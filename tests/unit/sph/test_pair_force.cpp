@@ -50,7 +50,8 @@ void checkBalance(const PairState& a, const PairState& b) {
   }
   // Energy: the work of the pair forces is returned exactly as internal energy
   // (m_a v_a.a_a + m_b v_b.a_b + m_a de_a + m_b de_b = 0), viscous heating included.
-  const double work = ma * sa * (a.vx * ab.ax + a.vz * ab.az) + mb * sb * (b.vx * ba.ax + b.vz * ba.az);
+  const double work =
+      ma * sa * (a.vx * ab.ax + a.vz * ab.az) + mb * sb * (b.vx * ba.ax + b.vz * ba.az);
   const double heat = ma * sa * ab.de + mb * sb * ba.de;
   EXPECT_NEAR(work + heat, 0.0, 1e-14 * (std::abs(work) + std::abs(heat)));
   EXPECT_LT(ab.phi, 0.0);  // the pairs below approach
@@ -64,6 +65,53 @@ TEST(PairTerms, PlanarPairConservesMomentumAndEnergy) {
 TEST(PairTerms, RzPairConservesAxialMomentumAndEnergy) {
   checkBalance<true>(state(0.010, 0.002, 0.3, -0.1, 2.9, 0.2, 1e-3, 0.010),
                      state(0.025, 0.011, -0.2, 0.05, 2.7, 0.05, 1.3e-3, 0.025));
+}
+
+// Compatible energy (docs/sph.md, "Energy"): the two sides' energy summands add up to the
+// symmetric form's pair heat (same semi-discrete total), each side is charged its own
+// pressure's work, and the shares of the step remainder are complementary.
+template <bool RZ>
+void checkCompatible(const PairState& a, const PairState& b) {
+  const MonaghanViscosity visc{1.0, 2.0};
+  const double dx = a.x - b.x, dz = a.z - b.z;
+  const double w = GaussianKernel::value(dx * dx + dz * dz, 0.5 * (a.h + b.h));
+  const PairResult sab = pairTerms<GaussianKernel, RZ, true>(a, b, w, visc);
+  const PairResult sba = pairTerms<GaussianKernel, RZ, true>(b, a, w, visc);
+  const PairResult cab = pairTerms<GaussianKernel, RZ, true, true>(a, b, w, visc);
+  const PairResult cba = pairTerms<GaussianKernel, RZ, true, true>(b, a, w, visc);
+  const double ma = RZ ? 2 * M_PI * a.mu * a.rw : a.mu, mb = RZ ? 2 * M_PI * b.mu * b.rw : b.mu;
+  const double sa = RZ ? 1.0 / a.rw : 1.0, sb = RZ ? 1.0 / b.rw : 1.0;
+  EXPECT_EQ(cab.ax, sab.ax);  // the momentum summands are the same bits
+  EXPECT_EQ(cab.az, sab.az);
+  const double heatSym = ma * sa * sab.de + mb * sb * sba.de;
+  const double heatCom = ma * sa * cab.de + mb * sb * cba.de;
+  EXPECT_NEAR(heatCom, heatSym, 1e-14 * std::abs(heatSym));
+  EXPECT_NEAR(cab.share + cba.share, 1.0, 1e-15);
+  EXPECT_GE(cab.share, 0.0);
+  EXPECT_LE(cab.share, 1.0);
+}
+
+TEST(PairTerms, CompatibleEnergySplitsThePairWork) {
+  checkCompatible<false>(state(0.010, 0.002, 0.3, -0.1, 2.9, 0.2, 1e-3, -1),
+                         state(0.025, 0.011, -0.2, 0.05, 2.7, 0.05, 1.3e-3, -1));
+  checkCompatible<true>(state(0.010, 0.002, 0.3, -0.1, 2.9, 0.2, 1e-3, 0.010),
+                        state(0.025, 0.011, -0.2, 0.05, 2.7, 0.05, 1.3e-3, 0.025));
+}
+
+TEST(PairTerms, CompatibleEnergyDoesNotCoolAPressurelessParticle) {
+  // a at P = 0 (cut off) separates from b at 1 Mbar: the pair's work all comes from b's
+  // pressure. The symmetric form charges a half of it (a cools); the compatible form none,
+  // and a takes no part of the step remainder either.
+  const PairState a = state(0.010, 0.0, -0.2, 0.0, 2.6, 0.0, 1e-3, -1);
+  const PairState b = state(0.018, 0.0, 0.2, 0.0, 3.6, 1.0, 1e-3, -1);
+  const double w = GaussianKernel::value(0.008 * 0.008, 0.02);
+  const MonaghanViscosity visc{1.0, 2.0};
+  const PairResult sym = pairTerms<GaussianKernel, false, true>(a, b, w, visc);
+  const PairResult com = pairTerms<GaussianKernel, false, true, true>(a, b, w, visc);
+  EXPECT_EQ(sym.phi, 0.0);  // separating: no viscosity
+  EXPECT_LT(sym.de, 0.0);
+  EXPECT_EQ(com.de, 0.0);
+  EXPECT_EQ(com.share, 0.0);
 }
 
 TEST(PairTerms, NoViscosityPolicyDropsPi) {

@@ -102,12 +102,17 @@ std::vector<std::string_view> allEffectNames();
 
 enum class Kernel { Gaussian, CubicSpline };
 enum class Lattice { Square, Hexagonal };
+//! SPH energy equation (docs/sph.md, "Energy"): Owen's compatibly differenced form, whose pair
+//! work is split by each side's own pressure work (exact total energy, no cooling of a particle
+//! by its neighbours' pressure), or METHOD.md's symmetric form (the study's).
+enum class EnergyForm { Compatible, Symmetric };
 
 struct SphParams {
   double spacing = 0.01;   //!< particle spacing dx, cm
   double hFactor = 1.0;    //!< h = hFactor * spacing
   Kernel kernel = Kernel::Gaussian;
   Lattice lattice = Lattice::Square;
+  EnergyForm energy = EnergyForm::Compatible;
   double alpha = 1.0;      //!< Monaghan alpha_Pi
   double beta = 2.0;       //!< Monaghan beta_Pi
   double cfl = 0.3;

@@ -1,5 +1,7 @@
 //! @file The pair term of the momentum, energy and continuity sums, planar and r-z (pure).
 #pragma once
+#include <cmath>
+
 #include "hvi/sph/viscosity.hpp"
 
 namespace hvi::sph {
@@ -21,17 +23,23 @@ struct PairState {
 //! With r = 1 these are the spec's planar equations exactly (section 3, docs/method.md).
 struct PairResult {
   double ax = 0.0, az = 0.0;  //!< -mu_b (q_a + q_b + rbar Pi) grad_a W_ab
-  double de = 0.0;            //!< mu_b (q_a + q_b + rbar Pi) v_ab . grad_a W_ab / 2
-  double drho = 0.0;          //!< mu_b v_ab . grad_a W_ab + mu_b lam_b W_ab
-  double hoop = 0.0;          //!< mu_b q_b W_ab
-  double phi = 0.0;           //!< viscosity phi_ab (<= 0), for the time-step limit
+  //! Symmetric (METHOD.md): mu_b (q_a + q_b + rbar Pi) v_ab . grad_a W_ab / 2.
+  //! Compatible: a's own share, mu_b k_a v_ab . grad_a W_ab with k_a = q_a + rbar Pi / 2.
+  double de = 0.0;
+  //! Compatible only: w_ab = |k_a| / (|k_a| + |k_b|) (1/2 if both vanish), a's part of the
+  //! pair's time-discretisation remainder (docs/sph.md, "Energy"); w_ba = 1 - w_ab.
+  double share = 0.5;
+  double drho = 0.0;  //!< mu_b v_ab . grad_a W_ab + mu_b lam_b W_ab
+  double hoop = 0.0;  //!< mu_b q_b W_ab
+  double phi = 0.0;   //!< viscosity phi_ab (<= 0), for the time-step limit
 };
 
 //! `w` is W(|x_a - x_b|, h_ab) (cached or freshly computed); K supplies grad W from it.
 //! `Viscous` = false removes the Pi term at compile time (effect artificial_viscosity absent);
 //! `RZ` = false drops the radius weights (planar: rw = 1, lam = 0, hoop unused).
-//! `ih2` = 1 / h_ab^2 (precomputed by the caller).
-template <class K, bool RZ, bool Viscous>
+//! `ih2` = 1 / h_ab^2 (precomputed by the caller). `Compatible` selects the energy summand
+//! (the momentum summands are the same bits either way).
+template <class K, bool RZ, bool Viscous, bool Compatible = false>
 inline PairResult pairTerms(const PairState& a, const PairState& b, double w, double ih2,
                             const MonaghanViscosity& visc) {
   const double dx = a.x - b.x, dz = a.z - b.z;
@@ -42,16 +50,27 @@ inline PairResult pairTerms(const PairState& a, const PairState& b, double w, do
   const double dvx = a.vx - b.vx, dvz = a.vz - b.vz;
   const double vdg = dvx * gx + dvz * gz;
   double coef = a.q + b.q;
+  double halfPi = 0.0;  // rbar Pi / 2: each side's part of the viscous work
   PairResult res;
   if constexpr (Viscous) {
-    const double pi = visc(dvx * dx + dvz * dz, r2, h, 0.5 * (a.c + b.c), 0.5 * (a.rho + b.rho),
-                           res.phi);
-    coef += RZ ? 0.5 * (a.rw + b.rw) * pi : pi;
+    const double pi =
+        visc(dvx * dx + dvz * dz, r2, h, 0.5 * (a.c + b.c), 0.5 * (a.rho + b.rho), res.phi);
+    const double rpi = RZ ? 0.5 * (a.rw + b.rw) * pi : pi;
+    coef += rpi;
+    halfPi = 0.5 * rpi;
   }
   const double mc = b.mu * coef;
   res.ax = -mc * gx;
   res.az = -mc * gz;
-  res.de = 0.5 * mc * vdg;
+  if constexpr (Compatible) {
+    const double ka = a.q + halfPi, kb = b.q + halfPi;
+    res.de = b.mu * ka * vdg;
+    const double s = std::abs(ka) + std::abs(kb);
+    res.share = s > 0.0 ? std::abs(ka) / s : 0.5;
+  } else {
+    (void)halfPi;
+    res.de = 0.5 * mc * vdg;
+  }
   if constexpr (RZ) {
     res.drho = b.mu * (vdg + b.lam * w);
     res.hoop = b.mu * b.q * w;
@@ -61,11 +80,11 @@ inline PairResult pairTerms(const PairState& a, const PairState& b, double w, do
   return res;
 }
 
-template <class K, bool RZ, bool Viscous>
+template <class K, bool RZ, bool Viscous, bool Compatible = false>
 inline PairResult pairTerms(const PairState& a, const PairState& b, double w,
                             const MonaghanViscosity& visc) {
   const double h = 0.5 * (a.h + b.h);
-  return pairTerms<K, RZ, Viscous>(a, b, w, 1.0 / (h * h), visc);
+  return pairTerms<K, RZ, Viscous, Compatible>(a, b, w, 1.0 / (h * h), visc);
 }
 
 }  // namespace hvi::sph

@@ -16,11 +16,12 @@ namespace hvi::sph {
 struct StepperConfig {
   Geometry geometry = Geometry::Planar;
   cases::Kernel kernel = cases::Kernel::Gaussian;
-  bool viscosity = true;           //!< effect artificial_viscosity
-  MonaghanViscosity visc;          //!< alpha_Pi, beta_Pi
+  bool viscosity = true;                                     //!< effect artificial_viscosity
+  MonaghanViscosity visc;                                    //!< alpha_Pi, beta_Pi
+  cases::EnergyForm energy = cases::EnergyForm::Compatible;  //!< docs/sph.md, "Energy"
   double cfl = 0.3;
-  cases::Domain domain;            //!< walls / axis are mirrors, outflow sides remove particles
-  double time = 0.0;               //!< us, time of the initial state
+  cases::Domain domain;  //!< walls / axis are mirrors, outflow sides remove particles
+  double time = 0.0;     //!< us, time of the initial state
   std::vector<std::string> objectNames;  //!< for diagnostics
 };
 
@@ -51,7 +52,7 @@ class Stepper {
 
   [[nodiscard]] double time() const;
   [[nodiscard]] long stepCount() const;
-  [[nodiscard]] std::size_t size() const;        //!< real particles
+  [[nodiscard]] std::size_t size() const;  //!< real particles
   [[nodiscard]] std::size_t ghostCount() const;
   [[nodiscard]] ParticleSystem particles() const;  //!< copy of the real particles' state
   [[nodiscard]] const NeighbourList& neighbours() const;
