@@ -105,6 +105,13 @@ class MarkerSet {
   //! (no allocation once its capacity suffices; scratch is reused likewise). Cost O(markers +
   //! line crossings + objects * faces); crossings are sorted per grid line.
   void faceApertures(const GridSpec& grid, FaceApertures& out) const;
+  //! Same, where `out` is already sized for `grid` and zero outside grid rows [rowLo, rowHi)
+  //! (as a previous call with rows within these leaves it), and the lines lie within those rows
+  //! (rowSpan): only the faces of those rows (z faces rowLo .. rowHi) are cleared and written.
+  void faceApertures(const GridSpec& grid, FaceApertures& out, int rowLo, int rowHi) const;
+  //! Grid rows [lo, hi) the lines span, points beyond the grid clamped onto it (the rows where
+  //! rasterize can give a fraction); lo = hi = 0 without lines.
+  void rowSpan(const GridSpec& grid, int& lo, int& hi) const;
 
   double area(int object) const;  //!< enclosed area (shoelace) of the object's lines, cm^2
   //! Volume represented by the object: area (per unit depth, cm^2) in planar geometry,
