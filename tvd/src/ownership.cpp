@@ -127,7 +127,8 @@ void Ownership::advanceLines(const Conserved& U, double dt, int rowLo, int rowHi
 
 void Ownership::move(const Conserved& U, double dt, int rowLo, int rowHi) {
   advanceLines(U, dt, rowLo, rowHi);
-  remeasure();
+  // The fractions are zero outside the rows (the lines never left them): only those cleared.
+  markers_.rasterize(cells_.grid, owner_, normal_, fraction_, rowLo, rowHi);
 }
 
 void Ownership::remeasure() {

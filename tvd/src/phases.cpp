@@ -167,13 +167,13 @@ void Phases::measure(const MarkerSet& markers, const std::vector<double>& fracti
   }
 }
 
-void Phases::mixture(Conserved& U) const {
+void Phases::mixture(Conserved& U, bool energy) const {
   const auto cells = static_cast<std::size_t>(grid.cells());
   for (auto* v : {&U.rho, &U.mx, &U.mz, &U.E}) v->resize(cells);  // zero where new
   const long c0 = cellLo(), c1 = cellHi();
   const long n = c1 - c0;
   double* out[4] = {U.rho.data(), U.mx.data(), U.mz.data(), U.E.data()};
-  for (int k = 0; k < 4; ++k) {
+  for (int k = 0; k < (energy ? 4 : 3); ++k) {
     // Component by component, phase by phase: contiguous streams (the phases are few).
     double* o = out[k];
     for (int p = 0; p < count; ++p) {

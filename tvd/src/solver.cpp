@@ -225,7 +225,7 @@ double TvdSolver::advance(double tStop) {
     if (phases_.count == 1) {
       ownership_.move(phases_.q.front(), dt, phases_.rowLo, phases_.rowHi);
     } else {
-      phases_.mixture(U_);
+      phases_.mixture(U_, false);  // the markers need the velocity; the energy comes below
       ownership_.move(U_, dt, phases_.rowLo, phases_.rowHi);
     }
     std::swap(alphaOld_, phases_.alpha);  // the old fractions, for the repair

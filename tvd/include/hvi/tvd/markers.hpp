@@ -98,6 +98,11 @@ class MarkerSet {
   //! (nonzero winding rule, in [0, 1]).
   void rasterize(const GridSpec& grid, std::vector<int>& owner, std::vector<Vec2>& normal,
                  std::vector<double>& fraction) const;
+  //! Same, where `fraction` (if already of its size) is zero outside grid rows [rowLo, rowHi):
+  //! only those rows and the rows the lines span (rowSpan) are cleared before the lines'
+  //! coverage is written.
+  void rasterize(const GridSpec& grid, std::vector<int>& owner, std::vector<Vec2>& normal,
+                 std::vector<double>& fraction, int rowLo, int rowHi) const;
 
   //! Apertures of every cell face by every object (see FaceApertures), exact for the straight
   //! marker segments up to rounding. Parts of the lines outside the grid count (the winding

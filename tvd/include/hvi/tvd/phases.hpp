@@ -70,8 +70,9 @@ struct Phases {
   //! First part of repair for phase p: material the sweeps carried ahead of the marker lines
   //! goes to the neighbouring cells the lines give it (working fraction `volume` against alpha).
   void settle(const CellVolumes& volumes, int p);
-  //! Mixture state: the sum of the phases' q (rows [rowLo, rowHi); U is zero outside).
-  void mixture(Conserved& U) const;
+  //! Mixture state: the sum of the phases' q (rows [rowLo, rowHi); U is zero outside);
+  //! without `energy`, U.E is left as it is.
+  void mixture(Conserved& U, bool energy = true) const;
 
  private:
   std::vector<unsigned char> mask_;  // repair scratch: cells to visit
