@@ -81,8 +81,8 @@ void TvdSolver::readCheckpoint(std::istream& in) {
     throw InputError("tvd checkpoint: not a TVD solver state (wrong magic number)");
   const auto version = r.value<std::uint32_t>();
   if (version < 2 || version > kVersion)
-    throw InputError(fmt::format(
-        "tvd checkpoint: format version {}, this build reads 2 to {}", version, kVersion));
+    throw InputError(fmt::format("tvd checkpoint: format version {}, this build reads 2 to {}",
+                                 version, kVersion));
   const auto nx = r.value<std::int32_t>(), nz = r.value<std::int32_t>();
   const auto rz = r.value<std::int32_t>(), markers = r.value<std::int32_t>();
   const auto cut = version >= 4 ? r.value<std::int32_t>() : 0;
@@ -132,6 +132,7 @@ void TvdSolver::readCheckpoint(std::istream& in) {
     phases_ = std::move(ph);
     measurePhases();
     phases_.alpha = std::move(saved);  // as saved (orphans included)
+    phases_.coverOccupied();
     volumeFresh_ = true;
     orphans_ = static_cast<long>(orphans);
   }

@@ -46,7 +46,9 @@ void TvdSolver::initialiseCut(const cases::Scene& scene) {
 // Largest signal speed over every phase cell, the check that each is physical, and (for the
 // markers) the mixture velocity of every cell that holds material.
 double TvdSolver::signalSpeedCut(double* vx, double* vz, long* worstCell) const {
-  const long cells = grid_.cells();
+  // Only the rows that can hold material (Phases::rowLo): outside, every phase is absent and
+  // the mixture velocity 0, as the arrays already hold there.
+  const long c0 = phases_.cellLo(), c1 = phases_.cellHi();
   detail::SpeedScan scan;
   int badPhase = -1;
   for (int p = 0; p < phases_.count; ++p) {
@@ -55,7 +57,7 @@ double TvdSolver::signalSpeedCut(double* vx, double* vz, long* worstCell) const 
     std::visit(
         [&](const auto& eos) {
           const bool found =
-              detail::scanSignalSpeed(cells, threads_, scan, [&](long c, CellState& s) {
+              detail::scanSignalSpeed(c0, c1, threads_, scan, [&](long c, CellState& s) {
                 const auto cc = static_cast<std::size_t>(c);
                 const double a = alpha[cc];
                 if (!(a >= kPhaseAbsent)) return 0;
@@ -83,8 +85,8 @@ double TvdSolver::signalSpeedCut(double* vx, double* vz, long* worstCell) const 
         q.mz[c], q.E[c]));
   }
   if (vx != nullptr) {
-#pragma omp parallel for schedule(static) num_threads(threads_) if (cells >= kParallelCells)
-    for (long c = 0; c < cells; ++c) {
+#pragma omp parallel for schedule(static) num_threads(threads_) if (c1 - c0 >= kParallelCells)
+    for (long c = c0; c < c1; ++c) {
       const auto cc = static_cast<std::size_t>(c);
       const double r = U_.rho[cc];
       vx[c] = r > 0.0 ? U_.mx[cc] / r : 0.0;

@@ -52,7 +52,30 @@ void addRun(double lo, double hi, const Family& fam, double* line) {
 }  // namespace
 
 void MarkerSet::faceApertures(const GridSpec& grid, FaceApertures& out) const {
+  faceApertures(grid, out, 0, std::max(grid.nz, 0));
+}
+
+void MarkerSet::rowSpan(const GridSpec& g, int& lo, int& hi) const {
+  double wl = 1e300, wh = -1e300;
+  for (const auto& l : lines_)
+    for (Vec2 p : l.points) {
+      const double w = std::clamp(detail::toCellUnits(g, p).z, 0.0, static_cast<double>(g.nz));
+      wl = std::min(wl, w);
+      wh = std::max(wh, w);
+    }
+  if (wl > wh || g.nz <= 0) {
+    lo = hi = 0;
+    return;
+  }
+  auto rowOf = [&](double v) { return std::clamp(static_cast<int>(std::floor(v)), 0, g.nz - 1); };
+  lo = rowOf(wl);
+  hi = rowOf(wh) + 1;
+}
+
+void MarkerSet::faceApertures(const GridSpec& grid, FaceApertures& out, int rowLo,
+                              int rowHi) const {
   const int nx = std::max(grid.nx, 0), nz = std::max(grid.nz, 0);
+  const bool sized = out.nx == nx && out.nz == nz && out.objects == objects_;
   out.nx = nx;
   out.nz = nz;
   out.objects = objects_;
@@ -60,6 +83,12 @@ void MarkerSet::faceApertures(const GridSpec& grid, FaceApertures& out) const {
   out.x.resize(static_cast<std::size_t>(2L * objects_ * xPerSide));
   out.z.resize(static_cast<std::size_t>(2L * objects_ * zPerSide));
   if (nx == 0 || nz == 0) return;
+  if (!sized) {  // a fresh layout: every face is cleared below
+    rowLo = 0;
+    rowHi = nz;
+  }
+  rowLo = std::clamp(rowLo, 0, nz);
+  rowHi = std::clamp(rowHi, rowLo, nz);
   const Family families[2] = {
       {true, nx + 1, nz, 1, nx + 1, xPerSide, +1},
       {false, nz + 1, nx, nx, 1, zPerSide, -1},
@@ -120,10 +149,17 @@ void MarkerSet::faceApertures(const GridSpec& grid, FaceApertures& out) const {
       LineCrossing* cross = crossings_.data();
       forSegments([&](int line, const LineCrossing& c) { cross[start[line]++] = c; });
 
-      // Zeroed contiguously (the x faces of one line are strided), then only wet faces written.
+      // The faces of rows [rowLo, rowHi) (z faces: face rows rowLo .. rowHi) zeroed
+      // contiguously per side (both families are row-major), then only wet faces written.
       const long work = static_cast<long>(fam.lines) * fam.faces;
+      const long rowWidth = fam.vertical ? nx + 1 : nx;
+      const long r0 = rowLo * rowWidth;
+      const long r1 = (fam.vertical ? rowHi : std::min(rowHi + 1, nz + 1)) * rowWidth;
+      for (int side = 0; side < 2; ++side) {
+        double* s = base + side * fam.sideStride;
 #pragma omp parallel for schedule(static) if (work >= kParallelFaces)
-      for (long f = 0; f < 2 * work; ++f) base[f] = 0.0;
+        for (long f = r0; f < r1; ++f) s[f] = 0.0;
+      }
 #pragma omp parallel for schedule(static) if (work >= kParallelFaces)
       for (int line = 0; line < fam.lines; ++line) {
         LineCrossing* b = cross + (line == 0 ? 0 : start[line - 1]);

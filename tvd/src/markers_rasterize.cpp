@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "hvi/tvd/markers.hpp"
 #include "hvi/tvd/marker_geometry.hpp"
+#include "hvi/tvd/markers.hpp"
 
 namespace hvi::tvd {
 namespace {
@@ -94,6 +94,30 @@ void MarkerSet::rasterize(const GridSpec& grid, std::vector<int>& owner,
 void MarkerSet::rasterize(const GridSpec& grid, std::vector<int>& owner, std::vector<Vec2>& normal,
                           std::vector<double>& fraction) const {
   fraction.assign(static_cast<std::size_t>(objects_) * static_cast<std::size_t>(grid.cells()), 0.0);
+  rasterizeInto(grid, owner, normal, fraction.data());
+}
+
+void MarkerSet::rasterize(const GridSpec& grid, std::vector<int>& owner, std::vector<Vec2>& normal,
+                          std::vector<double>& fraction, int rowLo, int rowHi) const {
+  const long cells = grid.cells();
+  const auto size = static_cast<std::size_t>(objects_) * static_cast<std::size_t>(cells);
+  if (fraction.size() != size) {
+    fraction.assign(size, 0.0);
+  } else {
+    int lo = 0, hi = 0;
+    rowSpan(grid, lo, hi);
+    if (lo < hi) {
+      rowLo = std::min(rowLo, lo);
+      rowHi = std::max(rowHi, hi);
+    }
+    rowLo = std::clamp(rowLo, 0, grid.nz);
+    rowHi = std::clamp(rowHi, rowLo, grid.nz);
+    for (int obj = 0; obj < objects_; ++obj) {
+      double* f = fraction.data() + static_cast<long>(obj) * cells;
+      std::fill(f + static_cast<long>(rowLo) * grid.nx, f + static_cast<long>(rowHi) * grid.nx,
+                0.0);
+    }
+  }
   rasterizeInto(grid, owner, normal, fraction.data());
 }
 

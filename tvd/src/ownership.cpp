@@ -58,17 +58,20 @@ void Ownership::restore(std::vector<int> owner, std::vector<Vec2> normal,
 // Time-centred velocity (mean of the start and end of the step) for the marker path. Raw
 // pointers: the stores through `known` (char) could alias the vectors' own pointers, which the
 // compiler would then reload for every cell.
-void Ownership::centredVelocity(const Conserved& U) {
+void Ownership::centredVelocity(const Conserved& U, int rowLo, int rowHi) {
   const long cells = cells_.grid.cells();
-  known_.assign(static_cast<std::size_t>(cells), 0);
+  const long c0 = static_cast<long>(rowLo) * cells_.grid.nx;
+  const long c1 = static_cast<long>(rowHi) * cells_.grid.nx;
+  known_.resize(static_cast<std::size_t>(cells));
+  std::fill(known_.begin() + c0, known_.begin() + c1, 0);
   signed char* known = known_.data();
   double* vx = vxMid_.data();
   double* vz = vzMid_.data();
   const double *vx0 = vxOld_.data(), *vz0 = vzOld_.data();
   const double *rho = U.rho.data(), *mx = U.mx.data(), *mz = U.mz.data();
   const int* owner = owner_.data();
-#pragma omp parallel for schedule(static) num_threads(threads_) if (cells >= kParallelCells)
-  for (long c = 0; c < cells; ++c) {
+#pragma omp parallel for schedule(static) num_threads(threads_) if (c1 - c0 >= kParallelCells)
+  for (long c = c0; c < c1; ++c) {
     if ((!cutCells_ && owner[c] < 0) || !(rho[c] > 0.0)) {
       vx[c] = vz[c] = 0.0;
       continue;
@@ -82,14 +85,14 @@ void Ownership::centredVelocity(const Conserved& U) {
 // Vacuum cells near material get the mean velocity of their already-known 8 neighbours, in
 // `layers` rings: the bilinear interpolation that moves a marker on a free surface then sees
 // the material's velocity on both sides instead of the zero velocity of empty cells.
-void Ownership::extendIntoVacuum(int layers) {
+void Ownership::extendIntoVacuum(int layers, int rowLo, int rowHi) {
   const int nx = cells_.grid.nx, nz = cells_.grid.nz;
   const signed char* known = known_.data();
   double* vx = vxMid_.data();
   double* vz = vzMid_.data();
   for (int layer = 0; layer < layers; ++layer) {
     fresh_.clear();
-    for (int k = 0; k < nz; ++k)
+    for (int k = rowLo; k < rowHi; ++k)
       for (int i = 0; i < nx; ++i) {
         const long c = static_cast<long>(k) * nx + i;
         if (known[c]) continue;
@@ -114,17 +117,18 @@ void Ownership::extendIntoVacuum(int layers) {
   }
 }
 
-void Ownership::advanceLines(const Conserved& U, double dt) {
+void Ownership::advanceLines(const Conserved& U, double dt, int rowLo, int rowHi) {
   const GridSpec& g = cells_.grid;
-  centredVelocity(U);
-  extendIntoVacuum(2);
+  centredVelocity(U, rowLo, rowHi);
+  extendIntoVacuum(2, rowLo, rowHi);
   markers_.advect(g, vxMid_.data(), vzMid_.data(), dt);
   markers_.redistribute(g);
 }
 
-void Ownership::move(const Conserved& U, double dt) {
-  advanceLines(U, dt);
-  remeasure();
+void Ownership::move(const Conserved& U, double dt, int rowLo, int rowHi) {
+  advanceLines(U, dt, rowLo, rowHi);
+  // The fractions are zero outside the rows (the lines never left them): only those cleared.
+  markers_.rasterize(cells_.grid, owner_, normal_, fraction_, rowLo, rowHi);
 }
 
 void Ownership::remeasure() {
@@ -137,7 +141,7 @@ void Ownership::remeasure() {
 void Ownership::update(Conserved& U, double dt, Budget& booked) {
   const GridSpec& g = cells_.grid;
   const long cells = g.cells();
-  advanceLines(U, dt);
+  advanceLines(U, dt, 0, g.nz);
   markers_.rasterize(g, ownerNew_, normalNew_);
   detail::interfaceNormals(markers_, g, ownerNew_, normalNew_, normalLength_);
 
@@ -280,10 +284,9 @@ void Ownership::measure(const Conserved& U) {
       if (m < 0) continue;
       const double mc = U.rho[static_cast<std::size_t>(c)] * cells_(c);
       mass_[static_cast<std::size_t>(m)] += mc;
-      const bool surface = (i > 0 && cellMaterial(c - 1) != m) ||
-                           (i + 1 < nx && cellMaterial(c + 1) != m) ||
-                           (k > 0 && cellMaterial(c - nx) != m) ||
-                           (k + 1 < nz && cellMaterial(c + nx) != m);
+      const bool surface =
+          (i > 0 && cellMaterial(c - 1) != m) || (i + 1 < nx && cellMaterial(c + 1) != m) ||
+          (k > 0 && cellMaterial(c - nx) != m) || (k + 1 < nz && cellMaterial(c + nx) != m);
       if (surface) band_[static_cast<std::size_t>(m)] += 0.5 * mc;
     }
 }

@@ -50,18 +50,86 @@ void Phases::resize(int phases, const GridSpec& g) {
   faces = FaceApertures{};
 }
 
+void Phases::coverRows(int lo, int hi) {
+  lo = std::max(lo, 0);
+  hi = std::min(hi, grid.nz);
+  if (lo >= hi) return;
+  if (rowLo >= rowHi) {
+    rowLo = lo;
+    rowHi = hi;
+    return;
+  }
+  rowLo = std::min(rowLo, lo);
+  rowHi = std::max(rowHi, hi);
+}
+
+void Phases::coverOccupied() {
+  const int nx = grid.nx;
+  for (int k = 0; k < grid.nz; ++k)
+    for (int p = 0; p < count; ++p) {
+      const auto b = static_cast<std::size_t>(k) * static_cast<std::size_t>(nx);
+      const Conserved& s = q[static_cast<std::size_t>(p)];
+      bool any = false;
+      const std::vector<double>* arrays[5] = {&alpha[static_cast<std::size_t>(p)], &s.rho, &s.mx,
+                                              &s.mz, &s.E};
+      for (const std::vector<double>* v : arrays)
+        for (int i = 0; i < nx && !any; ++i) any = (*v)[b + static_cast<std::size_t>(i)] != 0.0;
+      if (any) coverRows(k - kRowMargin, k + 1 + kRowMargin);
+    }
+}
+
 namespace {
 
 // Where the phases together exceed 1 (a cell, or a face side, where two bodies' lines overlap by
-// round-off), each is scaled down to fit.
-void fitTogether(const std::vector<double*>& part, long n) {
-  if (part.size() < 2) return;
-#pragma omp parallel for schedule(static) if (n >= kParallelCells)
-  for (long i = 0; i < n; ++i) {
+// round-off), each is scaled down to fit: from[p] -> to[p] over [lo, hi), below `absent` set to
+// 0 (absent < 0: no threshold). One pass; the sum in phase order, as the scaling always took it.
+void fitTogether(const double* const* from, double* const* to, int P, long lo, long hi,
+                 double absent) {
+  constexpr int kMax = 16;
+  if (P == 2) {  // one phase per body: two bodies is the common case (a striker and a target)
+    const double* f0 = from[0];
+    const double* f1 = from[1];
+    double* t0 = to[0];
+    double* t1 = to[1];
+#pragma omp parallel for schedule(static) if (hi - lo >= kParallelCells)
+    for (long i = lo; i < hi; ++i) {
+      double a0 = f0[i], a1 = f1[i];
+      const double total = 0.0 + a0 + a1;
+      if (total > 1.0) {
+        a0 /= total;
+        a1 /= total;
+      }
+      t0[i] = a0 < absent ? 0.0 : a0;
+      t1[i] = a1 < absent ? 0.0 : a1;
+    }
+    return;
+  }
+  if (P > kMax || P < 2) {  // one phase never exceeds 1; many: the plain loops
+#pragma omp parallel for schedule(static) if (hi - lo >= kParallelCells)
+    for (long i = lo; i < hi; ++i) {
+      double total = 0.0;
+      for (int p = 0; p < P; ++p) total += from[p][i];
+      for (int p = 0; p < P; ++p) {
+        double a = from[p][i];
+        if (P > 1 && total > 1.0) a /= total;
+        to[p][i] = a < absent ? 0.0 : a;
+      }
+    }
+    return;
+  }
+#pragma omp parallel for schedule(static) if (hi - lo >= kParallelCells)
+  for (long i = lo; i < hi; ++i) {
+    double v[kMax];
     double total = 0.0;
-    for (const double* v : part) total += v[i];
-    if (total > 1.0)
-      for (double* v : part) v[i] /= total;
+    for (int p = 0; p < P; ++p) {
+      v[p] = from[p][i];
+      total += v[p];
+    }
+    for (int p = 0; p < P; ++p) {
+      double a = v[p];
+      if (total > 1.0) a /= total;
+      to[p][i] = a < absent ? 0.0 : a;
+    }
   }
 }
 
@@ -69,36 +137,43 @@ void fitTogether(const std::vector<double*>& part, long n) {
 
 void Phases::measure(const MarkerSet& markers, const std::vector<double>& fraction) {
   const long cells = grid.cells();
-  std::vector<double*> part;
+  int lo = 0, hi = 0;
+  markers.rowSpan(grid, lo, hi);
+  coverRows(lo - kRowMargin, hi + kRowMargin);
+  std::vector<const double*> from(static_cast<std::size_t>(count));
+  std::vector<double*> to(static_cast<std::size_t>(count));
   for (int p = 0; p < count; ++p) {  // phase p is body (object) p
-    double* a = alpha[static_cast<std::size_t>(p)].data();
-    const double* f =
+    from[static_cast<std::size_t>(p)] =
         fraction.data() + static_cast<std::size_t>(p) * static_cast<std::size_t>(cells);
-#pragma omp parallel for schedule(static) if (cells >= kParallelCells)
-    for (long c = 0; c < cells; ++c) a[c] = f[c];
-    part.push_back(a);
+    to[static_cast<std::size_t>(p)] = alpha[static_cast<std::size_t>(p)].data();
   }
-  fitTogether(part, cells);
-  for (double* a : part) {
-#pragma omp parallel for schedule(static) if (cells >= kParallelCells)
-    for (long c = 0; c < cells; ++c)
-      if (a[c] < kPhaseAbsent) a[c] = 0.0;
-  }
-  markers.faceApertures(grid, faces);
-  for (auto* side : {&faces.x, &faces.z}) {
-    const long n = static_cast<long>(side->size()) / count;
-    part.clear();
-    for (int p = 0; p < count; ++p) part.push_back(side->data() + p * n);
-    fitTogether(part, n);
+  fitTogether(from.data(), to.data(), count, cellLo(), cellHi(), kPhaseAbsent);
+  markers.faceApertures(grid, faces, rowLo, rowHi);
+  if (count < 2) return;
+  // The faces of the rows (z faces: face rows rowLo .. rowHi), each side on its own.
+  for (const bool xFaces : {true, false}) {
+    auto& side = xFaces ? faces.x : faces.z;
+    const long n = static_cast<long>(side.size()) / count;  // one object: both sides
+    const long width = xFaces ? grid.nx + 1 : grid.nx;
+    const long perSide = n / 2;
+    const long f0 = rowLo * width;
+    const long f1 =
+        std::min<long>(xFaces ? rowHi : rowHi + 1, xFaces ? grid.nz : grid.nz + 1) * width;
+    for (int s = 0; s < 2; ++s) {
+      for (int p = 0; p < count; ++p)
+        to[static_cast<std::size_t>(p)] = side.data() + p * n + s * perSide;
+      fitTogether(to.data(), to.data(), count, f0, f1, -1.0);
+    }
   }
 }
 
-void Phases::mixture(Conserved& U) const {
+void Phases::mixture(Conserved& U, bool energy) const {
   const auto cells = static_cast<std::size_t>(grid.cells());
-  for (auto* v : {&U.rho, &U.mx, &U.mz, &U.E}) v->resize(cells);
-  const long n = static_cast<long>(cells);
+  for (auto* v : {&U.rho, &U.mx, &U.mz, &U.E}) v->resize(cells);  // zero where new
+  const long c0 = cellLo(), c1 = cellHi();
+  const long n = c1 - c0;
   double* out[4] = {U.rho.data(), U.mx.data(), U.mz.data(), U.E.data()};
-  for (int k = 0; k < 4; ++k) {
+  for (int k = 0; k < (energy ? 4 : 3); ++k) {
     // Component by component, phase by phase: contiguous streams (the phases are few).
     double* o = out[k];
     for (int p = 0; p < count; ++p) {
@@ -109,10 +184,10 @@ void Phases::mixture(Conserved& U) const {
                                   : s.E.data();
       if (p == 0) {
 #pragma omp parallel for schedule(static) if (n >= kParallelCells)
-        for (long c = 0; c < n; ++c) o[c] = in[c];
+        for (long c = c0; c < c1; ++c) o[c] = in[c];
       } else {
 #pragma omp parallel for schedule(static) if (n >= kParallelCells)
-        for (long c = 0; c < n; ++c) o[c] += in[c];
+        for (long c = c0; c < c1; ++c) o[c] += in[c];
       }
     }
   }
@@ -125,13 +200,14 @@ namespace {
 // a cell, and no pass can make a cell it did not list need it, so the result is that of a full
 // serial scan.
 template <class Need>
-void findCells(long cells, std::vector<unsigned char>& mask, std::vector<long>& out, Need need) {
-  mask.resize(static_cast<std::size_t>(cells));
+void findCells(long lo, long hi, std::vector<unsigned char>& mask, std::vector<long>& out,
+               Need need) {
+  mask.resize(static_cast<std::size_t>(hi));
   unsigned char* m = mask.data();
-#pragma omp parallel for schedule(static) if (cells >= kParallelCells)
-  for (long c = 0; c < cells; ++c) m[c] = need(c) ? 1 : 0;
+#pragma omp parallel for schedule(static) if (hi - lo >= kParallelCells)
+  for (long c = lo; c < hi; ++c) m[c] = need(c) ? 1 : 0;
   out.clear();
-  for (long c = 0; c < cells; ++c)
+  for (long c = lo; c < hi; ++c)
     if (m[c]) out.push_back(c);
 }
 
@@ -168,7 +244,7 @@ void Phases::settle(const CellVolumes& volumes, int p) {
   }();
   const double* ap = a.data();
   const double* wp = w.data();
-  findCells(grid.cells(), mask_, todo_, [&](long c) { return ap[c] - wp[c] > kTiny; });
+  findCells(cellLo(), cellHi(), mask_, todo_, [&](long c) { return ap[c] - wp[c] > kTiny; });
   for (const long cell : todo_) {
     const int i = static_cast<int>(cell % nx), k = static_cast<int>(cell / nx);
     const auto c = static_cast<std::size_t>(cell);
@@ -204,7 +280,7 @@ long Phases::repair(const CellVolumes& volumes, const std::vector<std::vector<do
     double* comp[4] = {s.rho.data(), s.mx.data(), s.mz.data(), s.E.data()};
     const double* ap = a.data();
     const double* rp = s.rho.data();
-    findCells(grid.cells(), mask_, todo_, [&](long c) {
+    findCells(cellLo(), cellHi(), mask_, todo_, [&](long c) {
       const bool has = rp[c] != 0.0;
       return (ap[c] < kPhaseAbsent && has) || (ap[c] >= kPhaseAbsent && (!has || ap[c] < 0.5));
     });

@@ -20,13 +20,18 @@ struct SpeedScan {
 //! Returns true if this call found the lowest unphysical cell so far.
 template <class State>
 bool scanSignalSpeed(long cells, int threads, SpeedScan& scan, State state) {
+  return scanSignalSpeed(0, cells, threads, scan, state);
+}
+//! Same over cells lo..hi-1 (the others hold nothing).
+template <class State>
+bool scanSignalSpeed(long lo, long hi, int threads, SpeedScan& scan, State state) {
   bool foundBad = false;
-#pragma omp parallel num_threads(threads) if (cells >= kParallelCells)
+#pragma omp parallel num_threads(threads) if (hi - lo >= kParallelCells)
   {
     double sLocal = 0.0;
     long wLocal = -1, bLocal = -1;
 #pragma omp for schedule(static)
-    for (long c = 0; c < cells; ++c) {
+    for (long c = lo; c < hi; ++c) {
       CellState s;
       const int kind = state(c, s);
       if (kind == 0) continue;

@@ -55,9 +55,7 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
   if (markersOn_) ownership_.startTargets(U_);
 }
 
-void TvdSolver::measurePhases() {
-  phases_.measure(ownership_.markers(), ownership_.fractions());
-}
+void TvdSolver::measurePhases() { phases_.measure(ownership_.markers(), ownership_.fractions()); }
 
 void TvdSolver::setUpGrid(const cases::Scene& scene) {
   const auto& p = scene.tvd;
@@ -225,10 +223,10 @@ double TvdSolver::advance(double tStop) {
     sweepCut(step_ % 2 == 0 ? 1 : 0, dt);
     // The markers move with the mixture velocity (one phase: its own state, no copy needed).
     if (phases_.count == 1) {
-      ownership_.move(phases_.q.front(), dt);
+      ownership_.move(phases_.q.front(), dt, phases_.rowLo, phases_.rowHi);
     } else {
-      phases_.mixture(U_);
-      ownership_.move(U_, dt);
+      phases_.mixture(U_, false);  // the markers need the velocity; the energy comes below
+      ownership_.move(U_, dt, phases_.rowLo, phases_.rowHi);
     }
     std::swap(alphaOld_, phases_.alpha);  // the old fractions, for the repair
     measurePhases();

@@ -42,13 +42,16 @@ inline Side sideOf(cases::Boundary b) {
 
 //! The span of a line the kernel updates: from its first to its last occupied cell (the rest of
 //! a marker run's line is empty), widened to the domain edge when within two cells of it, and
-//! what lies beyond each end. False if no cell is occupied.
+//! what lies beyond each end. False if no cell is occupied. Cells outside [lo, hi) are known to
+//! be empty and not looked at.
 template <class Occupied>
-inline bool lineWindow(int N, Side low, Side high, Occupied occupied, int& a, LineSetup& setup) {
-  a = 0;
-  int b = N;
-  while (a < N && !occupied(a)) ++a;
-  if (a == N) return false;
+inline bool lineWindow(int N, Side low, Side high, Occupied occupied, int& a, LineSetup& setup,
+                       int lo = 0, int hi = -1) {
+  if (hi < 0) hi = N;
+  a = lo;
+  int b = hi;
+  while (a < hi && !occupied(a)) ++a;
+  if (a == hi) return false;
   while (!occupied(b - 1)) --b;
   if (a <= 2) a = 0;
   if (b >= N - 2) b = N;

@@ -81,6 +81,8 @@ void TvdSolver::sweepCut(int direction, double dt) {
       LineRecord& rec = lineRecords_[static_cast<std::size_t>(line)];
       rec = LineRecord{};
       if (ws.failed) continue;
+      // Only the rows that can hold material (Phases::rowLo) have occupied cells.
+      if (xdir && (line < phases_.rowLo || line >= phases_.rowHi)) continue;
       const long base = xdir ? static_cast<long>(line) * nx : line;
       auto at = [&](int pos) { return base + pos * step; };
       auto occupied = [&](int pos) {
@@ -92,7 +94,8 @@ void TvdSolver::sweepCut(int direction, double dt) {
       };
       int a = 0;
       detail::LineSetup setup;
-      if (!detail::lineWindow(N, lowSide, highSide, occupied, a, setup)) continue;
+      const int lo = xdir ? 0 : phases_.rowLo, hi = xdir ? N : phases_.rowHi;
+      if (!detail::lineWindow(N, lowSide, highSide, occupied, a, setup, lo, hi)) continue;
       const int n = setup.n, b = a + n;
 
       // Apertures of the line's own faces, side `side`, as a strided array over the face index

@@ -98,6 +98,11 @@ class MarkerSet {
   //! (nonzero winding rule, in [0, 1]).
   void rasterize(const GridSpec& grid, std::vector<int>& owner, std::vector<Vec2>& normal,
                  std::vector<double>& fraction) const;
+  //! Same, where `fraction` (if already of its size) is zero outside grid rows [rowLo, rowHi):
+  //! only those rows and the rows the lines span (rowSpan) are cleared before the lines'
+  //! coverage is written.
+  void rasterize(const GridSpec& grid, std::vector<int>& owner, std::vector<Vec2>& normal,
+                 std::vector<double>& fraction, int rowLo, int rowHi) const;
 
   //! Apertures of every cell face by every object (see FaceApertures), exact for the straight
   //! marker segments up to rounding. Parts of the lines outside the grid count (the winding
@@ -105,6 +110,13 @@ class MarkerSet {
   //! (no allocation once its capacity suffices; scratch is reused likewise). Cost O(markers +
   //! line crossings + objects * faces); crossings are sorted per grid line.
   void faceApertures(const GridSpec& grid, FaceApertures& out) const;
+  //! Same, where `out` is already sized for `grid` and zero outside grid rows [rowLo, rowHi)
+  //! (as a previous call with rows within these leaves it), and the lines lie within those rows
+  //! (rowSpan): only the faces of those rows (z faces rowLo .. rowHi) are cleared and written.
+  void faceApertures(const GridSpec& grid, FaceApertures& out, int rowLo, int rowHi) const;
+  //! Grid rows [lo, hi) the lines span, points beyond the grid clamped onto it (the rows where
+  //! rasterize can give a fraction); lo = hi = 0 without lines.
+  void rowSpan(const GridSpec& grid, int& lo, int& hi) const;
 
   double area(int object) const;  //!< enclosed area (shoelace) of the object's lines, cm^2
   //! Volume represented by the object: area (per unit depth, cm^2) in planar geometry,

@@ -49,8 +49,11 @@ class Ownership {
   //! the velocity of every cell that holds material, owned or not.
   void setCutCells(bool on) { cutCells_ = on; }
   //! The marker step of the cut-cell mode: moves and redistributes the lines, rebuilds the
-  //! owner and normal arrays and the fractions; the flow state is not touched.
-  void move(const Conserved& U, double dt);
+  //! owner and normal arrays and the fractions; the flow state is not touched. The material
+  //! and the lines lie within grid rows [rowLo, rowHi), at least two rows from their ends (or
+  //! at the grid's edge), and so does every velocity this mode ever set (Phases::rowLo): only
+  //! those rows are visited.
+  void move(const Conserved& U, double dt, int rowLo, int rowHi);
   //! Per object and cell (object * cells + c): the part of the cell the object covers.
   [[nodiscard]] const std::vector<double>& fractions() const { return fraction_; }
   //! Rasterises the current lines again (after a restart) into owner, normals and fractions.
@@ -88,9 +91,9 @@ class Ownership {
     long count = 0;
   };
   // Moves the lines with the time-centred velocity and redistributes them (both modes).
-  void advanceLines(const Conserved& U, double dt);
-  void centredVelocity(const Conserved& U);
-  void extendIntoVacuum(int layers);
+  void advanceLines(const Conserved& U, double dt, int rowLo, int rowHi);
+  void centredVelocity(const Conserved& U, int rowLo, int rowHi);
+  void extendIntoVacuum(int layers, int rowLo, int rowHi);
   [[nodiscard]] Change fillFor(long cell, int to, const Conserved& U,
                                std::vector<ObjectSum>& sums) const;
   [[nodiscard]] std::vector<ObjectSum> sumObjects(const Conserved& U) const;

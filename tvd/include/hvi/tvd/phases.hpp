@@ -31,6 +31,21 @@ struct Phases {
   std::vector<std::vector<double>> volume;
   //! One-sided face apertures per phase (FaceApertures, one slot per body).
   FaceApertures faces;
+  //! Grid rows [rowLo, rowHi) that can hold material or geometry: the union, over the run, of
+  //! the rows the marker lines span, widened by kRowMargin. Every phase array (q, alpha,
+  //! volume, the apertures) and the mixture are zero outside, so the per-step passes visit these
+  //! rows only; any wider range gives the same results (docs/tvd.md, "Cost").
+  int rowLo = 0, rowHi = 0;
+  //! Rows beyond the lines' span: the markers' velocity reaches two cells into vacuum
+  //! (Ownership), and a z face row lies one above its cells.
+  static constexpr int kRowMargin = 3;
+  [[nodiscard]] long cellLo() const { return static_cast<long>(rowLo) * grid.nx; }
+  [[nodiscard]] long cellHi() const { return static_cast<long>(rowHi) * grid.nx; }
+  //! Widens [rowLo, rowHi) to hold rows [lo, hi) (clamped to the grid).
+  void coverRows(int lo, int hi);
+  //! Widens the rows to every row where some phase has a fraction or material (after a
+  //! restart: orphan cells may lie outside the lines' span).
+  void coverOccupied();
 
   [[nodiscard]] double apertureX(int p, int side, int i, int k) const {
     return faces.ax(p, side, i, k);
@@ -55,8 +70,9 @@ struct Phases {
   //! First part of repair for phase p: material the sweeps carried ahead of the marker lines
   //! goes to the neighbouring cells the lines give it (working fraction `volume` against alpha).
   void settle(const CellVolumes& volumes, int p);
-  //! Mixture state: the sum of the phases' q.
-  void mixture(Conserved& U) const;
+  //! Mixture state: the sum of the phases' q (rows [rowLo, rowHi); U is zero outside);
+  //! without `energy`, U.E is left as it is.
+  void mixture(Conserved& U, bool energy = true) const;
 
  private:
   std::vector<unsigned char> mask_;  // repair scratch: cells to visit
