@@ -359,32 +359,49 @@ class CutLineSolver {
     // faces that carry its mass out are scaled down until it keeps none to spare (a
     // positivity-preserving flux limiter in the sense of Hu, Adams and Shu, J. Comput. Phys.
     // 242 (2013) 169). A face flux is shared by its two cells, so this stays conservative.
-    absorbFading(ph);
+    absorbFading(ph, first);
+    //
+    // A cell absorbFading emptied into its neighbour is one cell with it from here on: its
+    // outer faces are the pair's, and what scaling them saves goes to the neighbour. Else the
+    // overdraw of a faded cell lands in a neighbour whose own faces may carry nothing out, and
+    // no face is left to limit (the Whipple debris cloud, docs/tvd.md "Robustness").
+    auto unit = [&](int c) { return ph.into[c] >= 0 ? ph.into[c] : c; };
     for (int pass = 0; pass < 8; ++pass) {
       bool short_ = false;
       for (int j = 2; j <= n_ + 1; ++j) {
-        if (!ph.present[j]) continue;
+        if (!ph.present[j] || ph.into[j] >= 0) continue;
         // judged mass >= 0: the predictor's result, the corrector's average
         const double floor = first ? 0.0 : -ph.q0[kRho][j];
         const double deficit = floor - ph.w[kRho][j];
         if (!(deficit > 0.0)) continue;
-        const double lam = C_.dt * W_.invVol[j];
-        const double outL =
-            lam * W_.area[j - 1] * ph.ap[j - 1] * std::max(-ph.flux[j - 1][kRho], 0.0);
-        const double outR = lam * W_.area[j] * ph.ap[j] * std::max(ph.flux[j][kRho], 0.0);
-        const double out = outL + outR;
+        int faces[4], nf = 0;
+        faces[nf++] = j - 1;
+        faces[nf++] = j;
+        if (j - 1 >= 2 && ph.into[j - 1] == j) faces[nf++] = j - 2;
+        if (j + 1 <= n_ + 1 && ph.into[j + 1] == j) faces[nf++] = j + 1;
+        auto leaving = [&](int f) {
+          const int l = unit(f), r = unit(f + 1);
+          if (l == r || !(ph.ap[f] > 0.0)) return false;
+          return (l == j && ph.flux[f][kRho] > 0.0) || (r == j && ph.flux[f][kRho] < 0.0);
+        };
+        double out = 0.0;
+        for (int i = 0; i < nf; ++i)
+          if (leaving(faces[i]))
+            out += C_.dt * W_.invVol[j] * W_.area[faces[i]] * ph.ap[faces[i]] *
+                   std::abs(ph.flux[faces[i]][kRho]);
         if (!(out > 0.0)) continue;
         const double theta = std::max(0.0, 1.0 - deficit / out * (1.0 + 1e-12));
-        for (int f : {j - 1, j}) {
-          const bool leaving = f == j ? ph.flux[f][kRho] > 0.0 : ph.flux[f][kRho] < 0.0;
-          if (!leaving) continue;
+        for (int i = 0; i < nf; ++i) {
+          const int f = faces[i];
+          if (!leaving(f)) continue;
           // The face's two cells take the change directly (a full update would undo the
           // absorbed fading cells).
           const double s = W_.area[f] * ph.ap[f] * (1.0 - theta);
+          const int l = unit(f), r = unit(f + 1);
           for (int k = 0; k < 4; ++k) {
             const double d = s * ph.flux[f][k];
-            if (f >= 2) ph.w[k][f] += C_.dt * W_.invVol[f] * d;
-            if (f + 1 <= n_ + 1) ph.w[k][f + 1] -= C_.dt * W_.invVol[f + 1] * d;
+            if (l >= 2) ph.w[k][l] += C_.dt * W_.invVol[l] * d;
+            if (r <= n_ + 1) ph.w[k][r] -= C_.dt * W_.invVol[r] * d;
             ph.flux[f][k] *= theta;
           }
         }
@@ -417,9 +434,17 @@ class CutLineSolver {
   // working volume went below zero, and with it, consistently, its mass) hands what it overdrew
   // to the neighbour through the face it drained by, and that face is dry for the rest of the
   // step: the edge now lies in the neighbour, whose part shrinks from the next stage on.
-  void absorbFading(PhaseLine& ph) {
+  //
+  // In the corrector the cell is judged by the Heun average, as everywhere: it has faded only
+  // if its average part is below zero, and then what moves is its average content (the cell
+  // ends empty). A corrector result below zero whose average is not (the exact remainder of a
+  // trailing edge, or an overdraw through a face) stays, for the positivity limiter below to
+  // scale the faces it drained by: moved on, the overdraw reached a neighbour with no outflow
+  // left to scale (the Whipple debris cloud, docs/tvd.md "Robustness").
+  void absorbFading(PhaseLine& ph, bool first) {
+    std::fill(ph.into.begin(), ph.into.begin() + n_ + 4, -1);
     for (int j = 2; j <= n_ + 1; ++j) {
-      if (!ph.present[j] || !(ph.volW[j] < 0.0)) continue;
+      if (!ph.present[j] || !(judgedVolume(ph, j, first) < 0.0)) continue;
       const double outR =
           ph.ap[j] > 0.0 && j + 1 <= n_ + 1 ? W_.area[j] * ph.ap[j] * ph.flux[j][kRho] : 0.0;
       const double outL = ph.ap[j - 1] > 0.0 && j - 1 >= 2
@@ -436,12 +461,15 @@ class CutLineSolver {
       if (t < 0) continue;
       const double vj = 1.0 / W_.invVol[j], vt = 1.0 / W_.invVol[t];
       for (int k = 0; k < 4; ++k) {
-        ph.w[k][t] += ph.w[k][j] * vj / vt;
-        ph.w[k][j] = 0.0;
+        const double keep = first ? 0.0 : -ph.q0[k][j];
+        ph.w[k][t] += (ph.w[k][j] - keep) * vj / vt;
+        ph.w[k][j] = keep;
       }
-      ph.volW[t] += ph.volW[j] * vj / vt;
-      ph.volW[j] = 0.0;
+      const double keepV = first ? 0.0 : -ph.vol0[j];
+      ph.volW[t] += (ph.volW[j] - keepV) * vj / vt;
+      ph.volW[j] = keepV;
       ph.dry[f] = 1;
+      ph.into[j] = t;
     }
   }
   // A cell whose working part has faded below kLiveFraction of its fraction (an edge leaving
@@ -481,7 +509,10 @@ class CutLineSolver {
   // integrals are pooled and redistributed by phase volume, exactly conservative.
   void merge(PhaseLine& ph) {
     for (int j = 2; j <= n_ + 1; ++j) {
-      if (!ph.present[j]) continue;
+      // A cell whose working part went below zero (a trailing edge left it) is absorbFading's,
+      // not a merge: pooled by volume with a negative part, the shares volW / pooled lie outside
+      // [0, 1] and grow without bound as the pooled volume goes to zero.
+      if (!ph.present[j] || !(ph.volW[j] > 0.0)) continue;
       const double vol = ph.volW[j] / W_.invVol[j];
       const double fl = W_.area[j - 1] * ph.gp[j - 1], fr = W_.area[j] * ph.gm[j];
       const double face = std::max(fl, fr) * C_.h;
@@ -495,7 +526,7 @@ class CutLineSolver {
         t = j - 1;
       else if (ar > 0.0 && j + 1 <= n_ + 1)
         t = j + 1;
-      if (t < 0) continue;
+      if (t < 0 || !(ph.volW[t] > 0.0)) continue;
       const double vj = 1.0 / W_.invVol[j], vt = 1.0 / W_.invVol[t];
       // Pooling a deficit would only spread it: the positivity limiter treats it first.
       if (!(ph.w[kRho][j] * vj + ph.w[kRho][t] * vt > 0.0)) continue;
