@@ -359,7 +359,7 @@ class CutLineSolver {
     // faces that carry its mass out are scaled down until it keeps none to spare (a
     // positivity-preserving flux limiter in the sense of Hu, Adams and Shu, J. Comput. Phys.
     // 242 (2013) 169). A face flux is shared by its two cells, so this stays conservative.
-    absorbFading(ph, first);
+    absorbFading(ph);
     //
     // A cell absorbFading emptied into its neighbour is one cell with it from here on: its
     // outer faces are the pair's, and what scaling them saves goes to the neighbour. Else the
@@ -434,17 +434,11 @@ class CutLineSolver {
   // working volume went below zero, and with it, consistently, its mass) hands what it overdrew
   // to the neighbour through the face it drained by, and that face is dry for the rest of the
   // step: the edge now lies in the neighbour, whose part shrinks from the next stage on.
-  //
-  // In the corrector the cell is judged by the Heun average, as everywhere: it has faded only
-  // if its average part is below zero, and then what moves is its average content (the cell
-  // ends empty). A corrector result below zero whose average is not (the exact remainder of a
-  // trailing edge, or an overdraw through a face) stays, for the positivity limiter below to
-  // scale the faces it drained by: moved on, the overdraw reached a neighbour with no outflow
-  // left to scale (the Whipple debris cloud, docs/tvd.md "Robustness").
-  void absorbFading(PhaseLine& ph, bool first) {
+  // The positivity limiter below treats the cell and that neighbour as one (`into`).
+  void absorbFading(PhaseLine& ph) {
     std::fill(ph.into.begin(), ph.into.begin() + n_ + 4, -1);
     for (int j = 2; j <= n_ + 1; ++j) {
-      if (!ph.present[j] || !(judgedVolume(ph, j, first) < 0.0)) continue;
+      if (!ph.present[j] || !(ph.volW[j] < 0.0)) continue;
       const double outR =
           ph.ap[j] > 0.0 && j + 1 <= n_ + 1 ? W_.area[j] * ph.ap[j] * ph.flux[j][kRho] : 0.0;
       const double outL = ph.ap[j - 1] > 0.0 && j - 1 >= 2
@@ -461,13 +455,11 @@ class CutLineSolver {
       if (t < 0) continue;
       const double vj = 1.0 / W_.invVol[j], vt = 1.0 / W_.invVol[t];
       for (int k = 0; k < 4; ++k) {
-        const double keep = first ? 0.0 : -ph.q0[k][j];
-        ph.w[k][t] += (ph.w[k][j] - keep) * vj / vt;
-        ph.w[k][j] = keep;
+        ph.w[k][t] += ph.w[k][j] * vj / vt;
+        ph.w[k][j] = 0.0;
       }
-      const double keepV = first ? 0.0 : -ph.vol0[j];
-      ph.volW[t] += (ph.volW[j] - keepV) * vj / vt;
-      ph.volW[j] = keepV;
+      ph.volW[t] += ph.volW[j] * vj / vt;
+      ph.volW[j] = 0.0;
       ph.dry[f] = 1;
       ph.into[j] = t;
     }

@@ -1,0 +1,37 @@
+//! @file The conservative cut-cell mode in a Whipple shield's debris cloud (docs/tvd.md,
+//! "Robustness"): the coarse smoke-run scene of docs/shield.md stopped at step 421 (t = 19.8 us,
+//! "phase density not positive ... after the positivity fallback") when the limiter could not
+//! reach the overdraw a faded cell had handed to its neighbour.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "hvi/cases/load.hpp"
+#include "hvi/test/tvd_scenes.hpp"
+
+namespace hvi::tvd {
+namespace {
+using namespace hvi::tvd::testing;
+
+TEST(TvdWhippleDebris, ConservativeModePassesTheFirstFailure) {
+  // 21 us: 440 steps, past the step that failed (421) by 20 steps.
+  const cases::Scene s =
+      cases::loadScene(HVI_SOURCE_DIR "/tests/regression/tvd/whipple_coarse_d04.toml");
+  TvdSolver solver(s);
+  ASSERT_TRUE(solver.phases().count > 1);  // the conservative mode, one phase per body
+  const Totals t0 = solver.totals();
+  EXPECT_NO_THROW(runTo(solver, 21.0));
+  EXPECT_GT(solver.step(), 430L);  // measured: 441
+  // The ledger closes (mass and energy through the outflow sides and the floors).
+  const Totals t1 = solver.totals();
+  const Budget b = solver.ledger().sum();
+  EXPECT_NEAR(t1.mass - t0.mass, b.mass, 1e-11 * t0.mass);
+  EXPECT_NEAR(t1.energy() - t0.energy(), b.energy, 1e-11 * t0.energy());
+  std::printf("whipple coarse d=0.4: t = %.3f us, step %ld, mass change %.3g (booked %.3g)\n",
+              solver.time(), static_cast<long>(solver.step()), t1.mass / t0.mass - 1,
+              b.mass / t0.mass);
+}
+
+}  // namespace
+}  // namespace hvi::tvd
