@@ -360,48 +360,31 @@ class CutLineSolver {
     // positivity-preserving flux limiter in the sense of Hu, Adams and Shu, J. Comput. Phys.
     // 242 (2013) 169). A face flux is shared by its two cells, so this stays conservative.
     absorbFading(ph);
-    //
-    // A cell absorbFading emptied into its neighbour is one cell with it from here on: its
-    // outer faces are the pair's, and what scaling them saves goes to the neighbour. Else the
-    // overdraw of a faded cell lands in a neighbour whose own faces may carry nothing out, and
-    // no face is left to limit (the Whipple debris cloud, docs/tvd.md "Robustness").
-    auto unit = [&](int c) { return ph.into[c] >= 0 ? ph.into[c] : c; };
     for (int pass = 0; pass < 8; ++pass) {
       bool short_ = false;
       for (int j = 2; j <= n_ + 1; ++j) {
-        if (!ph.present[j] || ph.into[j] >= 0) continue;
+        if (!ph.present[j]) continue;
         // judged mass >= 0: the predictor's result, the corrector's average
         const double floor = first ? 0.0 : -ph.q0[kRho][j];
         const double deficit = floor - ph.w[kRho][j];
         if (!(deficit > 0.0)) continue;
-        int faces[4], nf = 0;
-        faces[nf++] = j - 1;
-        faces[nf++] = j;
-        if (j - 1 >= 2 && ph.into[j - 1] == j) faces[nf++] = j - 2;
-        if (j + 1 <= n_ + 1 && ph.into[j + 1] == j) faces[nf++] = j + 1;
-        auto leaving = [&](int f) {
-          const int l = unit(f), r = unit(f + 1);
-          if (l == r || !(ph.ap[f] > 0.0)) return false;
-          return (l == j && ph.flux[f][kRho] > 0.0) || (r == j && ph.flux[f][kRho] < 0.0);
-        };
-        double out = 0.0;
-        for (int i = 0; i < nf; ++i)
-          if (leaving(faces[i]))
-            out += C_.dt * W_.invVol[j] * W_.area[faces[i]] * ph.ap[faces[i]] *
-                   std::abs(ph.flux[faces[i]][kRho]);
+        const double lam = C_.dt * W_.invVol[j];
+        const double outL =
+            lam * W_.area[j - 1] * ph.ap[j - 1] * std::max(-ph.flux[j - 1][kRho], 0.0);
+        const double outR = lam * W_.area[j] * ph.ap[j] * std::max(ph.flux[j][kRho], 0.0);
+        const double out = outL + outR;
         if (!(out > 0.0)) continue;
         const double theta = std::max(0.0, 1.0 - deficit / out * (1.0 + 1e-12));
-        for (int i = 0; i < nf; ++i) {
-          const int f = faces[i];
-          if (!leaving(f)) continue;
+        for (int f : {j - 1, j}) {
+          const bool leaving = f == j ? ph.flux[f][kRho] > 0.0 : ph.flux[f][kRho] < 0.0;
+          if (!leaving) continue;
           // The face's two cells take the change directly (a full update would undo the
           // absorbed fading cells).
           const double s = W_.area[f] * ph.ap[f] * (1.0 - theta);
-          const int l = unit(f), r = unit(f + 1);
           for (int k = 0; k < 4; ++k) {
             const double d = s * ph.flux[f][k];
-            if (l >= 2) ph.w[k][l] += C_.dt * W_.invVol[l] * d;
-            if (r <= n_ + 1) ph.w[k][r] -= C_.dt * W_.invVol[r] * d;
+            if (f >= 2) ph.w[k][f] += C_.dt * W_.invVol[f] * d;
+            if (f + 1 <= n_ + 1) ph.w[k][f + 1] -= C_.dt * W_.invVol[f + 1] * d;
             ph.flux[f][k] *= theta;
           }
         }
@@ -434,9 +417,7 @@ class CutLineSolver {
   // working volume went below zero, and with it, consistently, its mass) hands what it overdrew
   // to the neighbour through the face it drained by, and that face is dry for the rest of the
   // step: the edge now lies in the neighbour, whose part shrinks from the next stage on.
-  // The positivity limiter below treats the cell and that neighbour as one (`into`).
   void absorbFading(PhaseLine& ph) {
-    std::fill(ph.into.begin(), ph.into.begin() + n_ + 4, -1);
     for (int j = 2; j <= n_ + 1; ++j) {
       if (!ph.present[j] || !(ph.volW[j] < 0.0)) continue;
       const double outR =
@@ -461,7 +442,6 @@ class CutLineSolver {
       ph.volW[t] += ph.volW[j] * vj / vt;
       ph.volW[j] = 0.0;
       ph.dry[f] = 1;
-      ph.into[j] = t;
     }
   }
   // A cell whose working part has faded below kLiveFraction of its fraction (an edge leaving
@@ -501,9 +481,11 @@ class CutLineSolver {
   // integrals are pooled and redistributed by phase volume, exactly conservative.
   void merge(PhaseLine& ph) {
     for (int j = 2; j <= n_ + 1; ++j) {
-      // A cell whose working part went below zero (a trailing edge left it) is absorbFading's,
-      // not a merge: pooled by volume with a negative part, the shares volW / pooled lie outside
-      // [0, 1] and grow without bound as the pooled volume goes to zero.
+      // Only cells of positive working volume pool, so that the shares volW / pooled are convex
+      // (Hu et al. 2006 share by volume). A cell whose part went below zero (a trailing edge
+      // left it) is absorbFading's: pooled with it, the shares lay outside [0, 1] and grew
+      // without bound as the pooled volume went to zero (the Whipple debris cloud, docs/tvd.md
+      // "Robustness").
       if (!ph.present[j] || !(ph.volW[j] > 0.0)) continue;
       const double vol = ph.volW[j] / W_.invVol[j];
       const double fl = W_.area[j - 1] * ph.gp[j - 1], fr = W_.area[j] * ph.gm[j];

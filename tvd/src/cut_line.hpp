@@ -28,8 +28,6 @@ struct PhaseLine {
   std::vector<double> It;      // in-cell interface area across the line (planar form)
   std::vector<unsigned char> present;
   std::vector<unsigned char> dry;  // faces a trailing edge crossed in this stage
-  std::vector<int>
-      into;  // per cell: the neighbour absorbFading moved it into this stage (-1: none)
   std::vector<CellState> cs;
   std::vector<double> sqrtRho;
   std::vector<std::array<double, 4>> F, flux;

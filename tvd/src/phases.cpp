@@ -20,7 +20,6 @@ PhaseLine::PhaseLine(int capacity) {
     v->assign(nb, 0.0);
   present.assign(nb, 0);
   dry.assign(nb, 0);
-  into.assign(nb, -1);
   cs.assign(nb, CellState{});
   F.assign(nb, {});
   flux.assign(nb, {});
