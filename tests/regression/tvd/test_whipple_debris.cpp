@@ -1,7 +1,8 @@
 //! @file The conservative cut-cell mode in a Whipple shield's debris cloud (docs/tvd.md,
 //! "Robustness"): the coarse smoke-run scene of docs/shield.md stopped at step 421 (t = 19.8 us,
-//! "phase density not positive ... after the positivity fallback") when the limiter could not
-//! reach the overdraw a faded cell had handed to its neighbour.
+//! "phase density not positive ... after the positivity fallback"): a small-cell merge pooled a
+//! cell whose working volume had gone below zero, and the deficit it made was out of the
+//! positivity limiter's reach.
 #include <gtest/gtest.h>
 
 #include <cmath>
