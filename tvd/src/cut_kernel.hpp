@@ -481,7 +481,12 @@ class CutLineSolver {
   // integrals are pooled and redistributed by phase volume, exactly conservative.
   void merge(PhaseLine& ph) {
     for (int j = 2; j <= n_ + 1; ++j) {
-      if (!ph.present[j]) continue;
+      // Only cells of positive working volume pool, so that the shares volW / pooled are convex
+      // (Hu et al. 2006 share by volume). A cell whose part went below zero (a trailing edge
+      // left it) is absorbFading's: pooled with it, the shares lay outside [0, 1] and grew
+      // without bound as the pooled volume went to zero (the Whipple debris cloud, docs/tvd.md
+      // "Robustness").
+      if (!ph.present[j] || !(ph.volW[j] > 0.0)) continue;
       const double vol = ph.volW[j] / W_.invVol[j];
       const double fl = W_.area[j - 1] * ph.gp[j - 1], fr = W_.area[j] * ph.gm[j];
       const double face = std::max(fl, fr) * C_.h;
@@ -495,7 +500,7 @@ class CutLineSolver {
         t = j - 1;
       else if (ar > 0.0 && j + 1 <= n_ + 1)
         t = j + 1;
-      if (t < 0) continue;
+      if (t < 0 || !(ph.volW[t] > 0.0)) continue;
       const double vj = 1.0 / W_.invVol[j], vt = 1.0 / W_.invVol[t];
       // Pooling a deficit would only spread it: the positivity limiter treats it first.
       if (!(ph.w[kRho][j] * vj + ph.w[kRho][t] * vt > 0.0)) continue;
