@@ -111,7 +111,7 @@ pysph() {
   (cd "$tmp" && /usr/bin/python3 - <<'PY' | tee "$tmp/pysph.log"
 import time
 from pysph.examples.solid_mech.impact import Impact
-app = Impact()
+app = Impact(fname="impact")
 t0 = time.perf_counter()
 app.run(["--max-steps", "200", "--disable-output", "-d", "pysph_out"])
 wall = time.perf_counter() - t0
