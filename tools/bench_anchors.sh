@@ -94,9 +94,8 @@ TOML
   ath_zc=$(awk -F= '/zone-cycles\/cpu_second/ {gsub(/ /, "", $2); print $2}' "$tmp/athena.log")
   ath_cpu=$(awk -F= '/cpu time used/ {gsub(/ /, "", $2); print $2}' "$tmp/athena.log")
   echo "hvi TVD:  $hvi_steps steps, CPU $hvi_cpu s (wall $hvi_wall s), $(printf %.3e "$hvi_ups") cell-updates per CPU second"
-  echo "Athena++: $(grep -m1 'cycle=' "$tmp/athena.log" | tail -1), CPU $ath_cpu s, $ath_zc zone-cycles per CPU second"
-  tail -4 "$tmp/athena.log" | grep -i cycle || true
-  [[ -f $tmp/shock-errors.dat ]] && echo "Athena++ L1 errors: $(tail -1 "$tmp/shock-errors.dat")"
+  echo "Athena++: $(awk -v c=$((n * n)) '/^zone-cycles =/ {print $3 / c " cycles"}' "$tmp/athena.log"), CPU $ath_cpu s, $ath_zc zone-cycles per CPU second"
+  [[ -f $tmp/shock-errors.dat ]] && echo "Athena++ L1 errors (Nx1 Nx2 Nx3 cycles RMS rho M1 M2 M3 E): $(tail -1 "$tmp/shock-errors.dat")"
   echo "SOD RATIO hvi / Athena++ = $(ratio "$hvi_ups" "$ath_zc")   (issue 17 target: >= 1.5)"
 }
 
