@@ -82,6 +82,11 @@ void Boundaries::mirrorGhostVectors(double* vx, double* vz, std::size_t n) const
   }
 }
 
+void Boundaries::copyGhostScalars(double* v, std::size_t n) const {
+  for (std::size_t g = 0; g < parent_.size(); ++g)
+    v[n + g] = v[static_cast<std::size_t>(parent_[g])];
+}
+
 bool Boundaries::outflowed(double x, double z) const {
   return (outflow_[0] && x < domain_.xmin) || (outflow_[1] && x > domain_.xmax) ||
          (outflow_[2] && z < domain_.zmin) || (outflow_[3] && z > domain_.zmax);

@@ -85,7 +85,8 @@ void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list
       if constexpr (kPairs) out.hoopAx[i] = hoopAx;
       out.az[i] = saz * inv;
       out.de[i] = sde * inv + A.lam * hoop * inv;
-      if constexpr (Cached) out.drho[i] = sdrho + A.mu * A.lam * wii;
+      // The weight part of the continuity rate is the predictor's (weightChange).
+      if constexpr (Cached) out.drho[i] = sdrho;
     } else {
       out.ax[i] = sax;
       out.az[i] = saz;
@@ -158,6 +159,26 @@ void compatibleEnergy(const NeighbourList& list, std::size_t nReal, const double
     double corr = s / rw[i];
     if (hoopAx) corr += hoopAx[i] * dxi;
     de[i] -= halfDt * corr;
+  }
+}
+
+void weightChange(const NeighbourList& list, std::size_t nReal, const int* obj, const double* h,
+                  const double* dmu, cases::Kernel kernel, double* rho) {
+  const std::size_t stride = list.stride;
+  const long nr = static_cast<long>(nReal);
+#pragma omp parallel for schedule(static) if (nr > kParallelPairs)
+  for (long il = 0; il < nr; ++il) {
+    const std::size_t i = static_cast<std::size_t>(il);
+    const int* nb = list.index.data() + i * stride;
+    const double* wc = list.w.data() + i * stride;
+    const int oi = obj[i];
+    // Over i's own object, as the summation density and the continuity rate.
+    double s = dmu[i] * kernelSelf(kernel, h[i]);
+    for (int k = 0; k < list.count[i]; ++k) {
+      const std::size_t j = static_cast<std::size_t>(nb[k]);
+      if (obj[j] == oi) s += dmu[j] * wc[k];
+    }
+    rho[i] += s;
   }
 }
 

@@ -241,6 +241,18 @@ double Stepper::step(double tStop) {
     s.e[i] += half * s.de0[i];
     a.rho[i] += half * s.drho0[i];
   }
+  if (s.rz) {
+    // docs/sph-rz.md, "Density": the ring weights' change mu^{n+1/2} - mu^n is taken exactly,
+    // so the summation density's own law holds through it at any dt and cannot drive rho
+    // negative next to the axis (explicitly, (dt/2) v_r / r > 1 did).
+    const std::size_t total = a.size();
+    if (s.dmu.size() < total) s.dmu.resize(total);
+#pragma omp parallel for schedule(static) if (nl > detail::kParallelElements)
+    for (long i = 0; i < nl; ++i) s.dmu[i] = s.m[i] / (kTwoPi * std::abs(a.x[i])) - a.mu[i];
+    s.bounds.copyGhostScalars(s.dmu.data(), s.n);
+    detail::weightChange(s.list, s.n, a.obj.data(), a.h.data(), s.dmu.data(), s.cfg.kernel,
+                         a.rho.data());
+  }
   detail::evaluateEos(s.materials, s.mat.data(), a.rho.data(), s.e.data(), a.p.data(), a.c.data(),
                       s.n);
   s.deriveWeights();

@@ -25,6 +25,8 @@ class Boundaries {
   //! Sets the ghost entries [n, n + ghosts) of a vector field (vx, vz) to their parents',
   //! mirrored as velocities are.
   void mirrorGhostVectors(double* vx, double* vz, std::size_t n) const;
+  //! Sets the ghost entries [n, n + ghosts) of a scalar field to their parents'.
+  void copyGhostScalars(double* v, std::size_t n) const;
   [[nodiscard]] std::size_t ghostCount() const { return parent_.size(); }
 
   //! True if (x, z) lies beyond an outflow side of the domain.

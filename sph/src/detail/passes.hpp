@@ -49,6 +49,13 @@ void compatibleEnergy(const NeighbourList& list, std::size_t nReal, const double
                       const double* pairWz, const double* dax, const double* daz, const double* rw,
                       const double* hoopAx, double halfDt, double* de);
 
+//! r-z predictor (docs/sph-rz.md, "Density"): adds to rho_i the change of the summation
+//! density through the ring weights alone, sum_j dmu_j W_ij over i's own object (j = i
+//! included), with dmu = mu^{n+1/2} - mu^n on every point (ghosts as their parents) and the
+//! W_ij cached by the list build at x^n.
+void weightChange(const NeighbourList& list, std::size_t nReal, const int* obj, const double* h,
+                  const double* dmu, cases::Kernel kernel, double* rho);
+
 //! Builds the neighbour lists of the real particles among the a.size() points and, if
 //! `rhoOut` is not null, the summation density of the real particles into it (over the
 //! particle's own object).

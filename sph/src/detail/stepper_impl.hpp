@@ -78,6 +78,7 @@ struct Stepper::Impl {
   // Compatible energy: hoop acceleration (reals), a^{n+1/2} - a^n (reals and ghosts), and per
   // list entry w_ij times the pair acceleration summand (docs/sph.md, "Energy").
   std::vector<double> hoopAx, dax, daz, pairWx, pairWz;
+  std::vector<double> dmu;  // r-z predictor: mu^{n+1/2} - mu^n (reals and ghosts)
   std::vector<unsigned char> keep;
 
   CellGrid grid;

@@ -261,23 +261,24 @@ TEST(SphVerification, DenseStrikerContactKeepsInternalEnergyPositive) {
 }
 
 struct NohResult {
-  double l1, preShock, plateauP;
+  double l1, preShock, plateauP, plateauRho;
 };
 
 // Cylindrical Noh in r-z: gas (gamma 5/3, rho 1, e 0) flowing onto the axis at 1 cm/us, in a
 // slab of 10 rows between walls, r from 0 to 1, compared at t = 0.6 (shock at r = 0.2).
-NohResult noh(int cells) {
+NohResult noh(int cells, double alpha = 1.0) {
   const double dx = 1.0 / cells, hz = 10 * dx, t = 0.6;
   auto s = test::baseScene(Geometry::Axisymmetric, 0.0, 1.2, 0.0, hz, dx,
                            {Effect::ArtificialViscosity, Effect::MassAdjustment});
   s.domain.boundary[2] = s.domain.boundary[3] = cases::Boundary::Wall;
   s.materials = {test::idealGas(5.0 / 3.0)};
   s.bodies = {test::rectBody("gas", 0, 0.0, 1.0, 0.0, hz, {-1.0, 0.0}, 1.0, 0.0)};
+  s.sph.alpha = alpha;
   SphSolver solver(s);
   runTo(solver, t);
   const verify::NohSolution exact{5.0 / 3.0, 1.0, 1.0, 1};
   const ParticleSystem p = solver.stepper().particles();
-  NohResult r{0.0, 0.0, 0.0};
+  NohResult r{0.0, 0.0, 0.0, 0.0};
   int nPre = 0, nPost = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const double x = p.x[i];
@@ -291,15 +292,18 @@ NohResult noh(int cells) {
     }
     if (x > 0.05 && x < 0.17) {
       r.plateauP += p.p[i];
+      r.plateauRho += p.rho[i];
       ++nPost;
     }
   }
   r.l1 /= hz;
   r.plateauP /= nPost;
+  r.plateauRho /= nPost;
   std::printf(
-      "Noh r-z, %d cells per cm: L1(rho, r < 0.4) = %.4f, max pre-shock error %.2e, "
-      "plateau P %.4f (exact %.4f)\n",
-      cells, r.l1, r.preShock, r.plateauP, exact.sample(0.1, t).p);
+      "Noh r-z, %d cells per cm, alpha %.1f: L1(rho, r < 0.4) = %.4f, max pre-shock error "
+      "%.2e, plateau P %.4f (exact %.4f), plateau rho %.3f (exact %.1f)\n",
+      cells, alpha, r.l1, r.preShock, r.plateauP, exact.sample(0.1, t).p, r.plateauRho,
+      exact.sample(0.1, t).rho);
   EXPECT_GT(nPre, 0);
   return r;
 }
@@ -313,8 +317,28 @@ TEST(SphVerification, CylindricalNohInRz) {
   // The plateau pressure (exact 16/3): measured within 1%, 3% allowed; the density there is
   // lowered near the axis by wall heating (a known SPH/Noh artefact, ~5% at 0.1 cm).
   EXPECT_NEAR(b.plateauP, 16.0 / 3.0, 0.03 * 16.0 / 3.0);
+  EXPECT_NEAR(b.plateauRho, 16.0, 0.05 * 16.0);
   // L1 over r < 0.4 (exact integral of rho there: 6.9) falls with resolution.
   EXPECT_LT(b.l1, 0.8 * a.l1);
+}
+
+// Issue 14 item 1: with weak viscosity the innermost column used to reach the axis, be
+// reflected outwards, and the explicit -rho v_r / r of the predictor (with (dt/2) v_r / r > 1)
+// made its density negative (alpha = 0.5 stopped at step 88 of the study scene). With the
+// weights' change taken exactly (docs/sph-rz.md, "In time") the run reaches t = 0.6 at alpha
+// 0.5, 1 and 2. The plateau density (exact 16) over 0.05 < r < 0.17 is lowered by the wall
+// heating at the axis, more with stronger viscosity (whose heating it is): measured at 100
+// cells per cm 15.42 / 15.28 / 15.08 at alpha 0.5 / 1 / 2 (3.6 / 4.5 / 5.8% low). 7% allowed
+// here (5% at alpha 1 above): the dip's measured size plus a margin; a column reflected off
+// the axis rarefies the plateau by far more, and before the fix alpha 0.5 did not finish.
+TEST(SphVerification, CylindricalNohRunsAtEveryAlpha) {
+  for (double alpha : {0.5, 2.0}) {
+    NohResult r{};
+    ASSERT_NO_THROW(r = noh(100, alpha)) << "alpha " << alpha;
+    EXPECT_NEAR(r.plateauRho, 16.0, 0.07 * 16.0) << "alpha " << alpha;
+    EXPECT_NEAR(r.plateauP, 16.0 / 3.0, 0.03 * 16.0 / 3.0) << "alpha " << alpha;
+    EXPECT_LT(r.preShock, 0.01) << "alpha " << alpha;
+  }
 }
 
 }  // namespace

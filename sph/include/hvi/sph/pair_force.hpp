@@ -19,7 +19,9 @@ struct PairState {
 //! divides the momentum and energy sums by r_a and adds the hoop terms (docs/sph-rz.md):
 //!   dv_a/dt   = (1/r_a) sum ax,az + e_r H_a / r_a^2
 //!   de_a/dt   = (1/r_a) sum de    + lam_a H_a / r_a
-//!   drho_a/dt = sum drho (+ the self term mu_a lam_a W_aa),   H_a = sum hoop (+ self term).
+//!   drho_a/dt = sum drho + d/dt (sum_b mu_b W_ab),   H_a = sum hoop (+ self term);
+//! the second part of the continuity rate, the change of the ring weights mu_b (self term
+//! included), is taken exactly by the step driver, not summed here (docs/sph-rz.md).
 //! With r = 1 these are the spec's planar equations exactly (section 3, docs/method.md).
 struct PairResult {
   double ax = 0.0, az = 0.0;  //!< -mu_b (q_a + q_b + rbar Pi) grad_a W_ab
@@ -29,7 +31,7 @@ struct PairResult {
   //! Compatible only: w_ab = |k_a| / (|k_a| + |k_b|) (1/2 if both vanish), a's part of the
   //! pair's time-discretisation remainder (docs/sph.md, "Energy"); w_ba = 1 - w_ab.
   double share = 0.5;
-  double drho = 0.0;  //!< mu_b v_ab . grad_a W_ab + mu_b lam_b W_ab
+  double drho = 0.0;  //!< mu_b v_ab . grad_a W_ab
   double hoop = 0.0;  //!< mu_b q_b W_ab
   double phi = 0.0;   //!< viscosity phi_ab (<= 0), for the time-step limit
 };
@@ -71,12 +73,8 @@ inline PairResult pairTerms(const PairState& a, const PairState& b, double w, do
     (void)halfPi;
     res.de = 0.5 * mc * vdg;
   }
-  if constexpr (RZ) {
-    res.drho = b.mu * (vdg + b.lam * w);
-    res.hoop = b.mu * b.q * w;
-  } else {
-    res.drho = b.mu * vdg;
-  }
+  res.drho = b.mu * vdg;
+  if constexpr (RZ) res.hoop = b.mu * b.q * w;
   return res;
 }
 
