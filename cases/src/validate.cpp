@@ -42,22 +42,26 @@ void checkAxisymmetric(const TableReader& b, const Body& body, double tol) {
             "velocity = [\"0 km/s\", vz], or radial_velocity for flow onto the axis");
 }
 
-// Memory per work item measured on the hard cases (peak RSS against items): ~1 KiB per SPH
-// particle (state, step arrays and the Gaussian kernel's ~30-60 neighbours per particle), ~250 B
-// per TVD cell (conserved state, predictor copy, fluxes, ownership). The caps keep a run near
-// 10 GiB, under the 24 GiB of the machines this project targets, and keep item counts far from
-// integer overflow; a scene beyond them is refused before anything is allocated.
+// Memory per work item, peak RSS against items (docs/performance.md, tools/bench_effects.py
+// --memory): ~1.1 KiB per SPH particle (state, step arrays and the Gaussian kernel's ~30-60
+// neighbours per particle), ~250 B per TVD cell (conserved state, predictor copy, fluxes), ~500 B
+// per TVD cell with marker lines (owners, per-body fractions, apertures and states). The caps keep
+// a run near 12 GiB, under the 24 GiB of the machines this project targets, and keep item counts
+// far from integer overflow; a scene beyond them is refused before anything is allocated.
 constexpr double kMaxParticles = 1e7;
 constexpr double kMaxCells = 5e7;
+constexpr double kMaxCellsWithMarkers = 2.5e7;
 
 void checkSize(const TableReader& root, const Scene& scene, const std::string& section,
                const std::string& key, const std::string& what, double h) {
-  const double cap = scene.solver == SolverKind::Sph ? kMaxParticles : kMaxCells;
+  const double cap = scene.solver == SolverKind::Sph                ? kMaxParticles
+                     : scene.has(Effect::MaterialInterfaces) ? kMaxCellsWithMarkers
+                                                             : kMaxCells;
   const double items = estimatedWorkItems(scene);
   if (items <= cap) return;
   const auto sec = root.subTable(section, false);
   fail(root.ctx(), sec && sec->find(key) ? sec->find(key) : nullptr, section + "." + key,
-       fmt::format("{} cm gives about {:.3g} {}s, more than the {:.0e} hvi holds in memory "
+       fmt::format("{} cm gives about {:.3g} {}s, more than the {:.2g} hvi holds in memory "
                    "(docs/scenes.md)",
                    g6(h), items, what, cap),
        section + "." + key + " >= " + g6(h * std::sqrt(items / cap)) + " cm, or a smaller " +
