@@ -32,6 +32,7 @@ v=$(echo "$line" | sed 's/.*speed_km_s=\([^ ]*\).*/\1/')
 d=$(echo "$line" | sed 's/.*diameter_cm=\([^ ]*\).*/\1/')
 if [ -n "$HVI_FAKE_SLEEP" ] && [ -z "$mode" ]; then
   trap 'echo x > "$out/checkpoint.bin"; echo "{\"status\": \"interrupted\"}" > "$out/summary.json"; exit 130' INT
+  touch "$out/sleeping"
   sleep 30 &
   wait $!
 fi
@@ -138,9 +139,19 @@ TEST(Sweep, CtrlCCheckpointsTheRunningCasesAndTheSameCommandResumes) {
   const pid_t pid = fork();
   ASSERT_GE(pid, 0);
   if (pid == 0) ::_exit(runSweep(f.options(), g));
-  for (int i = 0; i < 100 && f.calls().size() < 2; ++i) ::usleep(50000);
+  // Wait until both children have installed their SIGINT trap (each touches 'sleeping' after
+  // it): a fixed pause lost that race on a heavily loaded machine.
+  const auto sleeping = [&] {
+    int n = 0;
+    std::error_code ec;  // the sweep may not have made its folders yet
+    for (fs::recursive_directory_iterator it(f.dir / "out", ec), end; !ec && it != end;
+         it.increment(ec))
+      n += it->path().filename() == "sleeping";
+    return n;
+  };
+  for (int i = 0; i < 600 && sleeping() < 2; ++i) ::usleep(50000);
+  ASSERT_EQ(sleeping(), 2);
   ASSERT_EQ(f.calls().size(), 2u);
-  ::usleep(300000);  // the children are in their sleep
   ::kill(pid, SIGINT);
   int st = 0;
   ASSERT_EQ(::waitpid(pid, &st, 0), pid);
