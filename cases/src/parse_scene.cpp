@@ -149,43 +149,49 @@ std::string fileTypeName(mode_t mode) {
   return "not a regular file";
 }
 
-[[noreturn]] void refuseFile(const std::string& name, const std::string& why) {
-  throw InputError(name + ": " + why + "; allowed: a regular scene file (TOML) of at most " +
-                   std::to_string(kMaxSceneBytes / (1024 * 1024)) + " MiB");
+[[noreturn]] void refuseFile(const std::string& name, std::string_view kind,
+                             const std::string& why) {
+  throw InputError(name + ": " + why + "; allowed: a regular " + std::string(kind) +
+                   " file (TOML) of at most " + std::to_string(kMaxSceneBytes / (1024 * 1024)) +
+                   " MiB");
 }
 
-void checkFileStatus(const std::string& name, const struct stat& st) {
-  if (!S_ISREG(st.st_mode)) refuseFile(name, "is " + fileTypeName(st.st_mode));
+void checkFileStatus(const std::string& name, std::string_view kind, const struct stat& st) {
+  if (!S_ISREG(st.st_mode)) refuseFile(name, kind, "is " + fileTypeName(st.st_mode));
   if (st.st_size > kMaxSceneBytes)
-    refuseFile(name, "is " + std::to_string(st.st_size) + " bytes, too large for a scene file");
+    refuseFile(name, kind,
+               "is " + std::to_string(st.st_size) + " bytes, too large for a " + std::string(kind) +
+                   " file");
 }
 
-//! The whole file, refusing special files before they are opened: a FIFO would block the open
-//! (or the read) for ever, and /dev/zero or /dev/urandom never end.
-std::string readSceneFile(const std::string& name) {
+}  // namespace
+
+std::string readInputFile(const std::string& name, std::string_view kind) {
+  const std::string what = std::string(kind) + " file";
   struct stat st {};
   if (::stat(name.c_str(), &st) != 0)
-    throw InputError(name + ": cannot read the scene file: " + std::strerror(errno));
-  checkFileStatus(name, st);
+    throw InputError(name + ": cannot read the " + what + ": " + std::strerror(errno));
+  checkFileStatus(name, kind, st);
   // O_NONBLOCK: should the path be swapped for a FIFO after the stat, the open still returns at
   // once and the fstat below refuses it.
   const int fd = ::open(name.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) throw InputError(name + ": cannot open the scene file: " + std::strerror(errno));
+  if (fd < 0) throw InputError(name + ": cannot open the " + what + ": " + std::strerror(errno));
   std::string text;
   try {
     if (::fstat(fd, &st) != 0)
-      throw InputError(name + ": cannot read the scene file: " + std::strerror(errno));
-    checkFileStatus(name, st);
+      throw InputError(name + ": cannot read the " + what + ": " + std::strerror(errno));
+    checkFileStatus(name, kind, st);
     // Read at most one byte past the limit, so a file growing while it is read is refused too.
     char buf[65536];
     for (;;) {
       const ssize_t got = ::read(fd, buf, sizeof buf);
       if (got < 0 && errno == EINTR) continue;
-      if (got < 0) throw InputError(name + ": cannot read the scene file: " + std::strerror(errno));
+      if (got < 0)
+        throw InputError(name + ": cannot read the " + what + ": " + std::strerror(errno));
       if (got == 0) break;
       text.append(buf, static_cast<std::size_t>(got));
       if (text.size() > static_cast<std::size_t>(kMaxSceneBytes))
-        refuseFile(name, "grew beyond the size limit while it was read");
+        refuseFile(name, kind, "grew beyond the size limit while it was read");
     }
   } catch (...) {
     ::close(fd);
@@ -195,10 +201,8 @@ std::string readSceneFile(const std::string& name) {
   return text;
 }
 
-}  // namespace
-
 Scene loadScene(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-  return parseScene(readSceneFile(file.string()), file.string(), overrides);
+  return parseScene(readInputFile(file.string(), "scene"), file.string(), overrides);
 }
 
 }  // namespace hvi::cases

@@ -1,13 +1,11 @@
 //! @file Reading a shield declaration (TOML) into a ShieldSpec; every error names file, line,
 //! key and what is allowed.
-#include <sys/stat.h>
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include "hvi/cases/load.hpp"
 #include "hvi/cases/names.hpp"
 #include "hvi/cases/quantity.hpp"
 #include "hvi/common/error.hpp"
@@ -184,15 +182,7 @@ ShieldSpec parseShield(std::string_view text, const std::string& sourceName) {
 }
 
 ShieldSpec loadShield(const std::filesystem::path& file) {
-  struct stat st {};
-  if (::stat(file.c_str(), &st) != 0 || !S_ISREG(st.st_mode) || st.st_size > (8 << 20))
-    throw InputError(file.string() +
-                     ": not a readable shield file; allowed: a regular TOML file of at most 8 MiB");
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  if (!in) throw InputError(file.string() + ": cannot be read");
-  return parseShield(ss.str(), file.string());
+  return parseShield(cases::readInputFile(file.string(), "shield"), file.string());
 }
 
 }  // namespace hvi::shield

@@ -9,6 +9,11 @@
 
 namespace hvi::cases {
 
+//! The whole text of an input file (TOML) of the given kind ("scene", "shield"), refusing
+//! directories, FIFOs, devices and files over 8 MiB before they are opened or read to the end:
+//! no input file makes hvi block or read without end. Throws hvi::InputError naming the file.
+std::string readInputFile(const std::string& name, std::string_view kind);
+
 //! Parses and validates a scene file. `overrides` are "dotted.key=value" strings (as given to
 //! `hvi run --set`) applied to the document before validation. Throws hvi::InputError whose
 //! message names the file, the line, the key and what is allowed. No partial Scene escapes.
