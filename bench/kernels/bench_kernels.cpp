@@ -78,6 +78,15 @@ const Block& block() {
   return b;
 }
 
+//! Pair interactions and particle updates per second of one pass over the block.
+void pairRates(benchmark::State& st, const Block& b) {
+  const double it = static_cast<double>(st.iterations());
+  st.counters["pair-interactions/s"] =
+      benchmark::Counter(it * static_cast<double>(b.pairs()), benchmark::Counter::kIsRate);
+  st.counters["particle-updates/s"] =
+      benchmark::Counter(it * static_cast<double>(b.n), benchmark::Counter::kIsRate);
+}
+
 // One pair pass: each particle's momentum, energy and continuity sums over its list, with the
 // cached W (the stepper's first pass of a step), planar, Monaghan viscosity on.
 void SphPairForce(benchmark::State& st) {
@@ -107,11 +116,7 @@ void SphPairForce(benchmark::State& st) {
     benchmark::DoNotOptimize(ax.data());
     benchmark::ClobberMemory();
   }
-  const double it = static_cast<double>(st.iterations());
-  st.counters["pair-interactions/s"] =
-      benchmark::Counter(it * static_cast<double>(b.pairs()), benchmark::Counter::kIsRate);
-  st.counters["particle-updates/s"] =
-      benchmark::Counter(it * static_cast<double>(b.n), benchmark::Counter::kIsRate);
+  pairRates(st, b);
   st.counters["neighbours"] = static_cast<double>(b.pairs()) / static_cast<double>(b.n);
 }
 BENCHMARK(SphPairForce)->Unit(benchmark::kMillisecond);
@@ -145,11 +150,7 @@ void SphPairForceFreshW(benchmark::State& st) {
     benchmark::DoNotOptimize(ax.data());
     benchmark::ClobberMemory();
   }
-  const double it = static_cast<double>(st.iterations());
-  st.counters["pair-interactions/s"] =
-      benchmark::Counter(it * static_cast<double>(b.pairs()), benchmark::Counter::kIsRate);
-  st.counters["particle-updates/s"] =
-      benchmark::Counter(it * static_cast<double>(b.n), benchmark::Counter::kIsRate);
+  pairRates(st, b);
 }
 BENCHMARK(SphPairForceFreshW)->Unit(benchmark::kMillisecond);
 
