@@ -1,0 +1,241 @@
+//! @file The SPH strength pass (docs/strength.md, "SPH"): deviatoric stress update and the
+//! stress pair terms of pair_stress.hpp summed over the neighbour lists.
+#include "detail/strength_pass.hpp"
+
+#include <variant>
+
+#include "detail/parallel.hpp"
+#include "hvi/sph/kernel.hpp"
+#include "hvi/sph/pair_stress.hpp"
+
+namespace hvi::sph::detail {
+namespace {
+
+// Each particle gathers over its own list, as the force pass does (fixed summation order, no
+// atomics). Velocity gradient over i's own object (as the continuity rate: bodies are separate
+// continua that meet at a contact), stress force and power over every pair (as the pressure:
+// the normal stress is continuous through a contact).
+template <class K, bool Cached, bool Pairs>
+void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
+                 const StressPoints& p, const double* sxx, const double* szz, const double* sxz,
+                 const double* g, double hFactor, int power, const Rates& out,
+                 const StressRates& rs) {
+  const std::size_t stride = list.stride;
+  const long nr = static_cast<long>(nReal);
+  const double q2dp = 1.0 / (hFactor * hFactor);  // (dp / h)^2
+#pragma omp parallel for schedule(static) if (nr > kParallelPairs)
+  for (long il = 0; il < nr; ++il) {
+    const std::size_t i = static_cast<std::size_t>(il);
+    const double xi = a.x[i], zi = a.z[i], vxi = a.vx[i], vzi = a.vz[i], hi = a.h[i];
+    const int oi = a.obj[i];
+    const Sym2 ti{p.txx[i], p.tzz[i], p.txz[i]}, ri{p.rxx[i], p.rzz[i], p.rxz[i]};
+    const int* nb = list.index.data() + i * stride;
+    const double* wc = list.w.data() + i * stride;
+    const int cnt = list.count[i];
+    const double ih2i = 1.0 / (hi * hi);
+    const double wdpi = K::value(q2dp * hi * hi, hi, ih2i);
+    double* pwx = Pairs ? out.pairWx + i * stride : nullptr;
+    double* pwz = Pairs ? out.pairWz + i * stride : nullptr;
+    double gxx = 0.0, gxz = 0.0, gzx = 0.0, gzz = 0.0;
+    double sax = 0.0, saz = 0.0, sde = 0.0;
+    for (int k = 0; k < cnt; ++k) {
+      const std::size_t j = static_cast<std::size_t>(nb[k]);
+      const double hj = a.h[j];
+      double ih2 = ih2i, hij = hi, wdp = wdpi;
+      if (hj != hi) {
+        hij = 0.5 * (hi + hj);
+        ih2 = 1.0 / (hij * hij);
+        wdp = K::value(q2dp * hij * hij, hij, ih2);
+      }
+      const double dx = xi - a.x[j], dz = zi - a.z[j];
+      const double r2 = dx * dx + dz * dz;
+      double w;
+      if constexpr (Cached) {
+        w = wc[k];
+      } else {
+        w = K::value(r2, hij, ih2);
+      }
+      if (w == 0.0) continue;
+      const double f = K::gradFactor(w, r2, hij, ih2);
+      const double gx = f * dx, gz = f * dz;  // grad_i W_ij
+      const double dvx = vxi - a.vx[j], dvz = vzi - a.vz[j];
+      if (a.obj[j] == oi) {
+        const VelocityGradientTerm t = velocityGradientTerm(a.mu[j] / a.rho[j], -dvx, -dvz, gx, gz);
+        gxx += t.xx;
+        gxz += t.xz;
+        gzx += t.zx;
+        gzz += t.zz;
+      }
+      Sym2 tab{ti.xx + p.txx[j], ti.zz + p.tzz[j], ti.xz + p.txz[j]};
+      if (power > 0) {
+        const double fab = w / wdp;
+        double fn = fab;
+        for (int e = 1; e < power; ++e) fn *= fab;
+        tab.xx += fn * (ri.xx + p.rxx[j]);
+        tab.zz += fn * (ri.zz + p.rzz[j]);
+        tab.xz += fn * (ri.xz + p.rxz[j]);
+      }
+      const StressPairTerm st = stressPairTerm(tab, a.mu[j], dvx, dvz, gx, gz);
+      sax += st.ax;
+      saz += st.az;
+      sde += st.de;
+      if constexpr (Pairs) {
+        // The compatible energy's remainder needs each pair acceleration times i's share of
+        // the pair's work; the stress power is split evenly (stressPairTerm), share 1/2.
+        pwx[k] += 0.5 * st.ax;
+        pwz[k] += 0.5 * st.az;
+      }
+    }
+    out.ax[i] += sax;
+    out.az[i] += saz;
+    out.de[i] += sde;
+    const strength::VelocityGradient grad{gxx, gxz, gzx, gzz, 0.0};
+    const strength::Deviator s{sxx[i], szz[i], sxz[i]};
+    const strength::Deviator ds = strength::jaumannRate(s, grad, g[i]);
+    rs.dsxx[i] = ds.xx;
+    rs.dszz[i] = ds.zz;
+    rs.dsxz[i] = ds.xz;
+    rs.strainRate[i] = strength::equivalentStrainRate(grad);
+  }
+}
+
+template <class K>
+void dispatch(bool cached, bool pairs, const PairArrays& a, std::size_t n,
+              const NeighbourList& list, const StressPoints& p, const double* sxx,
+              const double* szz, const double* sxz, const double* g, double hFactor, int power,
+              const Rates& out, const StressRates& rs) {
+  if (cached)
+    stressPairs<K, true, false>(a, n, list, p, sxx, szz, sxz, g, hFactor, power, out, rs);
+  else if (pairs)
+    stressPairs<K, false, true>(a, n, list, p, sxx, szz, sxz, g, hFactor, power, out, rs);
+  else
+    stressPairs<K, false, false>(a, n, list, p, sxx, szz, sxz, g, hFactor, power, out, rs);
+}
+
+}  // namespace
+
+StrengthModel::StrengthModel(std::vector<std::optional<strength::Material>> solids,
+                             std::vector<double> rho0, cases::Kernel kernel, double hFactor,
+                             double epsilon, int power)
+    : solids_(std::move(solids)),
+      rho0_(std::move(rho0)),
+      kernel_(kernel),
+      hFactor_(hFactor),
+      epsilon_(epsilon),
+      power_(epsilon > 0.0 ? power : 0) {}
+
+void StrengthModel::resize(std::size_t n) {
+  forEachState(*this, [n](auto& v) { v.resize(n, 0.0); });
+  for (auto* v : {&cL, &g_, &sxx0_, &szz0_, &sxz0_, &dsxx_, &dszz_, &dsxz_, &rate_})
+    v->resize(n, 0.0);
+}
+
+void StrengthModel::compact(const std::vector<unsigned char>& keep, std::size_t n0, std::size_t n) {
+  forEachState(*this, [&](auto& v) {
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < n0; ++i)
+      if (keep[i]) v[k++] = v[i];
+  });
+  resize(n);
+}
+
+void StrengthModel::beginStep(std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) {
+    sxx0_[i] = sxx[i];
+    szz0_[i] = szz[i];
+    sxz0_[i] = sxz[i];
+  }
+}
+
+void StrengthModel::advance(double dt, std::size_t n, const PairArrays& a, const double* e,
+                            const int* mat, bool accumulate) {
+  const long nl = static_cast<long>(n);
+  for (std::size_t k = 0; k < solids_.size(); ++k) {
+    const int kk = static_cast<int>(k);
+    if (!solids_[k]) {
+      // A fluid carries no deviator (its rate is 0: G = 0 and s = 0).
+      for (long i = 0; i < nl; ++i)
+        if (mat[i] == kk) sxx[i] = szz[i] = sxz[i] = 0.0;
+      continue;
+    }
+    const strength::Material& sm = *solids_[k];
+    const double rho0 = rho0_[k];
+    std::visit(
+        [&](const auto& law) {
+#pragma omp parallel for schedule(static) if (nl > kParallelElements)
+          for (long il = 0; il < nl; ++il) {
+            const std::size_t i = static_cast<std::size_t>(il);
+            if (mat[i] != kk) continue;
+            strength::Deviator s{sxx0_[i] + dt * dsxx_[i], szz0_[i] + dt * dszz_[i],
+                                 sxz0_[i] + dt * dsxz_[i]};
+            const double eta = a.rho[i] / rho0;
+            const strength::YieldInput in{epsP[i], rate_[i], a.p[i],
+                                          sm.thermal.temperature(eta, e[i]), eta};
+            const strength::ReturnResult rr = strength::radialReturn(s, law.yield(in), g_[i]);
+            sxx[i] = s.xx;
+            szz[i] = s.zz;
+            sxz[i] = s.xz;
+            if (accumulate) epsP[i] += rr.plasticStrain;
+          }
+        },
+        sm.yield);
+  }
+}
+
+double StrengthModel::temperature(const PairArrays& a, const double* e, int mat,
+                                  std::size_t i) const {
+  const auto& sm = solids_[static_cast<std::size_t>(mat)];
+  if (!sm) return 0.0;
+  return sm->thermal.temperature(a.rho[i] / rho0_[static_cast<std::size_t>(mat)], e[i]);
+}
+
+void StrengthModel::refreshPoints(const PairArrays& a, std::size_t n, const double* e,
+                                  const int* mat, const Boundaries& bounds) {
+  const std::size_t total = a.size();
+  for (auto* v : {&pts_.txx, &pts_.tzz, &pts_.txz, &pts_.rxx, &pts_.rzz, &pts_.rxz})
+    if (v->size() < total) v->resize(total);
+  const long nl = static_cast<long>(n);
+#pragma omp parallel for schedule(static) if (nl > kParallelElements)
+  for (long il = 0; il < nl; ++il) {
+    const std::size_t i = static_cast<std::size_t>(il);
+    const std::size_t k = static_cast<std::size_t>(mat[i]);
+    const double rho = a.rho[i];
+    if (!solids_[k]) {
+      g_[i] = 0.0;
+      cL[i] = a.c[i];
+      pts_.txx[i] = pts_.tzz[i] = pts_.txz[i] = 0.0;
+      pts_.rxx[i] = pts_.rzz[i] = pts_.rxz[i] = 0.0;
+      continue;
+    }
+    const strength::Material& sm = *solids_[k];
+    const double eta = rho / rho0_[k];
+    const double g = strength::shearModulus(sm, a.p[i], sm.thermal.temperature(eta, e[i]), eta);
+    g_[i] = g;
+    cL[i] = strength::longitudinalSoundSpeed(a.c[i], g, rho);
+    const double ir2 = 1.0 / (rho * rho);
+    pts_.txx[i] = sxx[i] * ir2;
+    pts_.tzz[i] = szz[i] * ir2;
+    pts_.txz[i] = sxz[i] * ir2;
+    Sym2 r;
+    if (power_ > 0) r = artificialStress({sxx[i] - a.p[i], szz[i] - a.p[i], sxz[i]}, rho, epsilon_);
+    pts_.rxx[i] = r.xx;
+    pts_.rzz[i] = r.zz;
+    pts_.rxz[i] = r.xz;
+  }
+  bounds.mirrorGhostTensors(pts_.txx.data(), pts_.tzz.data(), pts_.txz.data(), n);
+  bounds.mirrorGhostTensors(pts_.rxx.data(), pts_.rzz.data(), pts_.rxz.data(), n);
+}
+
+void StrengthModel::pass(const PairArrays& a, std::size_t n, const NeighbourList& list, bool cached,
+                         const Rates& out) {
+  const StressRates rs{dsxx_.data(), dszz_.data(), dsxz_.data(), rate_.data()};
+  const bool pairs = !cached && out.pairWx != nullptr;
+  if (kernel_ == cases::Kernel::Gaussian)
+    dispatch<GaussianKernel>(cached, pairs, a, n, list, pts_, sxx.data(), szz.data(), sxz.data(),
+                             g_.data(), hFactor_, power_, out, rs);
+  else
+    dispatch<CubicSplineKernel>(cached, pairs, a, n, list, pts_, sxx.data(), szz.data(), sxz.data(),
+                                g_.data(), hFactor_, power_, out, rs);
+}
+
+}  // namespace hvi::sph::detail

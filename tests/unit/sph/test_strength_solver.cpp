@@ -1,0 +1,345 @@
+//! @file SPH with the effect `strength` (docs/strength.md, "SPH"): elastic wave speed, the
+//! Hugoniot elastic limit, conservation, mirror ghosts, checkpoint and snapshot fields.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <set>
+#include <sstream>
+#include <vector>
+
+#include "hvi/cases/effects.hpp"
+#include "hvi/cases/names.hpp"
+#include "hvi/sph/sph.hpp"
+#include "hvi/test/sph_test_scenes.hpp"
+
+namespace hvi::sph {
+namespace {
+
+using cases::Effect;
+
+// Aluminium of the study's Tillotson EOS with a constant (elastic-perfectly plastic) yield and
+// the shear modulus of 6061-T6 (Steinberg 1991: 27.6 GPa).
+constexpr double kShear = 0.276;  // Mbar
+cases::Material strongAluminium(double y0) {
+  cases::Material m = test::aluminium();
+  strength::Material sm;
+  sm.shearModulus = kShear;
+  sm.yield = strength::ConstantYield{y0};
+  sm.thermal.cv = 0.896e-5;
+  m.strength = sm;
+  return m;
+}
+
+std::set<Effect> effects(bool withStrength) {
+  std::set<Effect> e{Effect::ArtificialViscosity, Effect::MassAdjustment};
+  if (withStrength) e.insert(Effect::Strength);
+  return e;
+}
+
+// Uniaxial strain (a 1-D slab): a strip `columns` particles wide between two walls (mirrors)
+// at x = 0 and x = width, so the ghosts continue it laterally without end. A flyer of the same
+// material (z in [0, flyer]) moving at -v0 hits the target (z in [-depth, 0]) at rest.
+cases::Scene slab(double dx, int columns, double depth, double flyer, double v0, double y0,
+                  bool withStrength) {
+  const double width = columns * dx;
+  auto s = test::baseScene(Geometry::Planar, 0.0, width, -depth - 0.5, flyer + 0.5, dx, {});
+  s.effects = effects(withStrength);
+  s.domain.boundary[0] = s.domain.boundary[1] = cases::Boundary::Wall;
+  s.materials = {withStrength ? strongAluminium(y0) : test::aluminium()};
+  s.bodies = {test::rectBody("flyer", 0, 0.0, width, 0.0, flyer, {0.0, -v0}),
+              test::rectBody("target", 0, 0.0, width, -depth, 0.0)};
+  test::resolveDensities(s);
+  return s;
+}
+
+// Index of the real particle of the target closest to (x, z).
+std::size_t nearest(const ParticleSystem& ps, double x, double z) {
+  std::size_t best = 0;
+  double d = 1e300;
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    const double di = std::hypot(ps.x[i] - x, ps.z[i] - z);
+    if (di < d) {
+      d = di;
+      best = i;
+    }
+  }
+  return best;
+}
+
+// Depth of the front: where the row-averaged longitudinal velocity -v_z of the target first
+// reaches `level` coming from its undisturbed deep end, linear between rows.
+double frontDepth(const ParticleSystem& ps, double dx, double level) {
+  std::vector<double> sum, cnt;
+  double zmin = 1e300;
+  for (std::size_t i = 0; i < ps.size(); ++i) zmin = std::min(zmin, ps.z[i]);
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    const auto row = static_cast<std::size_t>(std::lround((ps.z[i] - zmin) / dx));
+    if (row >= sum.size()) {
+      sum.resize(row + 1, 0.0);
+      cnt.resize(row + 1, 0.0);
+    }
+    sum[row] -= ps.vz[i];
+    cnt[row] += 1.0;
+  }
+  double prev = sum[0] / cnt[0];
+  for (std::size_t r = 1; r < sum.size(); ++r) {
+    const double v = cnt[r] > 0.0 ? sum[r] / cnt[r] : prev;
+    if (v >= level) return zmin + dx * (static_cast<double>(r) - (v - level) / (v - prev));
+    prev = v;
+  }
+  return 0.0;
+}
+
+// Speed of the front between times t1 and t2 (front positions from the velocity profile).
+double frontSpeed(const cases::Scene& s, double t1, double t2, double level) {
+  SphSolver solver(s);
+  solver.advance(t1);
+  while (solver.time() < t1) solver.advance(t1);
+  const double z1 = frontDepth(solver.stepper().particles(), s.sph.spacing, level);
+  while (solver.time() < t2) solver.advance(t2);
+  const double z2 = frontDepth(solver.stepper().particles(), s.sph.spacing, level);
+  return (z1 - z2) / (t2 - t1);
+}
+
+// A small velocity step (1 m/s, strain ~1e-4: linear elasticity) in a laterally confined slab
+// travels at the longitudinal speed c_L = sqrt((K + 4G/3) / rho) = sqrt(c0^2 + 4G / (3 rho0))
+// (Meyers, Dynamic behavior of materials, 1994, ch. 2), not at the bulk speed c0 of the
+// hydrodynamic run. The front (half of the particle-velocity jump v0/2 of equal materials) is
+// located in the row-averaged velocity profile at 0.5 and 1.4 us, after it has formed; its
+// smearing is then steady and cancels in the difference. 1 % is the bound. Measured
+// (dx = 0.01 cm, h = dx): c_L -0.80 %, and the hydrodynamic run's front c0 -0.75 % (the same
+// at dx = 0.005: a bias of the scheme's front, not of the strength terms); the ratio of the two
+// speeds is then c_L / c0 to 0.04 %, bounded at 0.3 % (the bulk speed alone misses by 18 %).
+TEST(SphStrength, ElasticWaveTravelsAtLongitudinalSpeed) {
+  const double v0 = 1e-4, dx = 0.01;
+  const eos::Eos al = test::aluminium().eos;
+  const double rho0 = eos::referenceDensity(al);
+  const double c0 = std::visit([&](const auto& e) { return e.state(rho0, 0.0).soundSpeed; }, al);
+  const double cL = strength::longitudinalSoundSpeed(c0, kShear, rho0);
+  const double elastic = frontSpeed(slab(dx, 4, 1.0, 0.3, v0, 1.0, true), 0.5, 1.4, 0.25 * v0);
+  const double bulk = frontSpeed(slab(dx, 4, 1.0, 0.3, v0, 1.0, false), 0.5, 1.4, 0.25 * v0);
+  std::printf(
+      "c0 = %.5f, c_L = %.5f cm/us; measured: strength %.5f (%.2f %%), hydro %.5f "
+      "(%.2f %%)\n",
+      c0, cL, elastic, 100.0 * (elastic / cL - 1.0), bulk, 100.0 * (bulk / c0 - 1.0));
+  EXPECT_NEAR(elastic / cL, 1.0, 0.01);
+  EXPECT_NEAR((elastic / bulk) / (cL / c0), 1.0, 0.003);
+}
+
+// Row averages (deep end first) of the longitudinal stress -sigma_zz = P - s_zz and of -v_z.
+struct Profile {
+  std::vector<double> z, stress, velocity;
+};
+Profile profile(const SphSolver& solver, double dx) {
+  const ParticleSystem ps = solver.stepper().particles();
+  const StrengthFields f = solver.stepper().strengthFields();
+  double zmin = 1e300;
+  for (std::size_t i = 0; i < ps.size(); ++i) zmin = std::min(zmin, ps.z[i]);
+  Profile p;
+  std::vector<double> cnt;
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    const auto row = static_cast<std::size_t>(std::lround((ps.z[i] - zmin) / dx));
+    if (row >= cnt.size()) {
+      cnt.resize(row + 1, 0.0);
+      p.z.resize(row + 1, 0.0);
+      p.stress.resize(row + 1, 0.0);
+      p.velocity.resize(row + 1, 0.0);
+    }
+    cnt[row] += 1.0;
+    p.z[row] += ps.z[i];
+    p.stress[row] += ps.p[i] - (f.szz.empty() ? 0.0 : f.szz[i]);
+    p.velocity[row] -= ps.vz[i];
+  }
+  for (std::size_t r = 0; r < cnt.size(); ++r)
+    if (cnt[r] > 0.0) {
+      p.z[r] /= cnt[r];
+      p.stress[r] /= cnt[r];
+      p.velocity[r] /= cnt[r];
+    }
+  return p;
+}
+
+// Planar flyer-plate impact (200 m/s, Al on Al) in an elastic-perfectly plastic metal: a
+// two-wave structure whose elastic precursor carries the Hugoniot elastic limit
+// sigma_HEL = Y0 (1 - nu) / (1 - 2 nu) = (K + 4G/3) Y0 / 2G (uniaxial strain yields at
+// 2 G eps = Y0; Meyers 1994, ch. 7), and a plastic wave behind it at about 2.5 HEL. K is the
+// EOS's rho0 c0^2. The precursor's plateau is read where the longitudinal-stress profile is
+// flattest between the two fronts. Bound 3 % (the issue's): the linear formula leaves out the
+// EOS's finite-strain and Gruneisen terms at eps = 0.55 % (+1 %: the stress at the first
+// yielding particle is 1.0115 sigma_HEL) and the plateau carries the plastic wave's foot
+// (measured +2.5 % at dx = 0.01 cm, +1.2 % at 0.005 cm).
+TEST(SphStrength, ElasticPrecursorCarriesTheHugoniotElasticLimit) {
+  const double y0 = 0.003, dx = 0.01;
+  const eos::Eos al = test::aluminium().eos;
+  const double rho0 = eos::referenceDensity(al);
+  const double c0 = std::visit([&](const auto& e) { return e.state(rho0, 0.0).soundSpeed; }, al);
+  const double k = rho0 * c0 * c0;
+  const double nu = (3.0 * k - 2.0 * kShear) / (2.0 * (3.0 * k + kShear));
+  const double hel = y0 * (1.0 - nu) / (1.0 - 2.0 * nu);
+  SphSolver solver(slab(dx, 4, 1.8, 0.6, 0.02, y0, true));
+  while (solver.time() < 2.5) solver.advance(2.5);
+  const Profile p = profile(solver, dx);
+  double flattest = 1e300, plateau = 0.0, peak = 0.0;
+  std::size_t at = 0;
+  for (std::size_t r = 2; r + 2 < p.z.size(); ++r) {
+    peak = std::max(peak, p.stress[r]);
+    if (p.stress[r] < 0.5 * hel || p.stress[r] > 1.5 * hel) continue;
+    const double slope = std::abs(p.stress[r + 2] - p.stress[r - 2]);
+    if (slope < flattest) {
+      flattest = slope;
+      plateau = p.stress[r];
+      at = r;
+    }
+  }
+  // The two fronts: where the stress reaches half the HEL (elastic) and half-way from the HEL
+  // to the peak (plastic), searched from the deep end.
+  double zElastic = 0.0, zPlastic = 0.0;
+  for (std::size_t r = 0; r < p.z.size(); ++r)
+    if (p.stress[r] >= 0.5 * hel) {
+      zElastic = p.z[r];
+      break;
+    }
+  for (std::size_t r = 0; r < p.z.size(); ++r)
+    if (p.stress[r] >= 0.5 * (hel + peak)) {
+      zPlastic = p.z[r];
+      break;
+    }
+  std::printf(
+      "nu = %.4f, sigma_HEL = %.6f Mbar; plateau %.6f (%.2f %%) at z = %.3f, peak %.5f; "
+      "fronts: elastic z = %.3f, plastic z = %.3f\n",
+      nu, hel, plateau, 100.0 * (plateau / hel - 1.0), p.z[at], peak, zElastic, zPlastic);
+  EXPECT_NEAR(plateau / hel, 1.0, 0.03);
+  EXPECT_GT(peak, 2.0 * hel);  // a plastic wave of well above the HEL follows
+  // ... separated from the precursor by the plateau (> 10 spacings at 2.5 us).
+  EXPECT_GT(zPlastic - zElastic, 10.0 * dx);
+}
+
+// A 2 km/s block impact (0.19 Mbar, some 30 x the yield: strongly plastic) on a plate resting
+// on a wall, with the Steinberg-Guinan 6061-T6 preset (G(P, T), melt). `xmin` = 0 puts a
+// mirror (wall) on the symmetry plane x = 0; -0.4 runs the whole, symmetric problem.
+cases::Scene blocks(double xmin, cases::EnergyForm energy) {
+  auto s = test::baseScene(Geometry::Planar, xmin, 0.4, -0.2, 0.3, 0.02,
+                           {Effect::ArtificialViscosity, Effect::MassAdjustment, Effect::Strength});
+  if (xmin == 0.0) s.domain.boundary[0] = cases::Boundary::Wall;
+  s.domain.boundary[2] = cases::Boundary::Wall;
+  s.sph.energy = energy;
+  cases::Material al = test::aluminium();
+  al.strength = strength::findPreset("al6061_t6")->material;
+  s.materials = {al};
+  const double x0 = xmin == 0.0 ? 0.0 : -0.16;
+  s.bodies = {test::rectBody("striker", 0, x0, 0.16, 0.0, 0.1, {0.0, -0.2}),
+              test::rectBody("plate", 0, x0, 0.16, -0.1, 0.0)};
+  test::resolveDensities(s);
+  return s;
+}
+
+// Total energy with strength (docs/sph.md, "Energy"): the stress pair force enters the
+// compatible energy's pair data with the even share of its work (stressPairTerm), so each
+// step's internal-energy change is still exactly minus its kinetic-energy change: the same
+// round-off bound as the hydrodynamic test (Conservation.CompatibleEnergyIsExactAtAnyTimeStep,
+// 1e-12). Momentum: the stress pair forces are antisymmetric (round-off; the wall takes z
+// momentum, so x only, which the mirror at x = 0 leaves alone only in the full problem).
+// (The study's symmetric form drifts at O(dt^2): measured -1.2e-3 here, at a coarse 0.02 cm.)
+TEST(SphStrength, TotalEnergyIsConservedWithStrength) {
+  for (auto energy : {cases::EnergyForm::Compatible}) {
+    SphSolver solver(blocks(-0.4, energy));
+    const Totals t0 = solver.totals();
+    for (int k = 0; k < 80; ++k) solver.advance(1e9);
+    const Totals t1 = solver.totals();
+    const StrengthFields f = solver.stepper().strengthFields();
+    const double epsMax = *std::max_element(f.plasticStrain.begin(), f.plasticStrain.end());
+    const double dE = t1.energy() / t0.energy() - 1.0;
+    std::printf("%s: t = %.3f us, dE/E = %.2e, max eps_p = %.3f, Px = %.1e\n",
+                cases::toString(energy).data(), solver.time(), dE, epsMax, t1.momentumX);
+    EXPECT_GT(epsMax, 0.05);  // the strength terms are doing work
+    EXPECT_LT(std::abs(t1.momentumX), 1e-13 * std::abs(t0.momentumZ));
+    EXPECT_LT(std::abs(dE), 1e-12);
+  }
+}
+
+// A mirror (wall) carries the deviator with s_xz reversed: the half problem with the mirror on
+// the symmetry plane gives the whole problem's state (its x >= 0 half) up to round-off
+// (measured 1.7e-17 Mbar against |s_xz| up to 1.4e-3). With s_xz copied unchanged instead the
+// deviators differ by 2.3e-8 at 0.1 us (tried), which the bound catches.
+TEST(SphStrength, MirrorGhostsCarryTheDeviator) {
+  SphSolver whole(blocks(-0.4, cases::EnergyForm::Compatible));
+  SphSolver half(blocks(0.0, cases::EnergyForm::Compatible));
+  while (whole.time() < 0.1) whole.advance(0.1);
+  while (half.time() < 0.1) half.advance(0.1);
+  const ParticleSystem a = whole.stepper().particles(), b = half.stepper().particles();
+  const StrengthFields fa = whole.stepper().strengthFields(), fb = half.stepper().strengthFields();
+  double sMax = 0.0, dS = 0.0, dV = 0.0;
+  std::size_t matched = 0;
+  for (std::size_t j = 0; j < b.size(); ++j) {
+    // the whole problem's particle nearest to this one
+    std::size_t best = 0;
+    double d = 1e300;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      const double di = std::hypot(a.x[i] - b.x[j], a.z[i] - b.z[j]);
+      if (di < d) {
+        d = di;
+        best = i;
+      }
+    }
+    if (d > 1e-3 * 0.02) continue;
+    ++matched;
+    sMax = std::max(sMax, std::abs(fa.sxz[best]));
+    dS = std::max({dS, std::abs(fa.sxz[best] - fb.sxz[j]), std::abs(fa.szz[best] - fb.szz[j])});
+    dV = std::max(dV, std::hypot(a.vx[best] - b.vx[j], a.vz[best] - b.vz[j]));
+  }
+  std::printf("matched %zu of %zu, max |s_xz| %.2e, max |ds| %.2e, max |dv| %.2e\n", matched,
+              b.size(), sMax, dS, dV);
+  EXPECT_EQ(matched, b.size());
+  EXPECT_GT(sMax, 1e-4);
+  // Round-off grown through the flow (summation orders differ); 1e-6 of the shear scale.
+  EXPECT_LT(dS, 1e-6 * sMax);
+}
+
+// A restart from a checkpoint continues bit for bit with the deviator and the plastic strain.
+TEST(SphStrength, RestartIsBitForBit) {
+  const cases::Scene s = blocks(0.0, cases::EnergyForm::Compatible);
+  SphSolver original(s);
+  for (int k = 0; k < 15; ++k) original.advance(1e9);
+  std::stringstream ckpt;
+  original.writeCheckpoint(ckpt);
+  for (int k = 0; k < 15; ++k) original.advance(1e9);
+  SphSolver restarted(s);
+  restarted.readCheckpoint(ckpt);
+  for (int k = 0; k < 15; ++k) restarted.advance(1e9);
+  const auto same = [](const std::vector<double>& x, const std::vector<double>& y) {
+    return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(double)) == 0;
+  };
+  const ParticleSystem a = original.stepper().particles(), b = restarted.stepper().particles();
+  const StrengthFields fa = original.stepper().strengthFields(),
+                       fb = restarted.stepper().strengthFields();
+  EXPECT_EQ(original.time(), restarted.time());
+  EXPECT_TRUE(same(a.vx, b.vx) && same(a.vz, b.vz) && same(a.e, b.e) && same(a.p, b.p));
+  EXPECT_TRUE(same(fa.sxx, fb.sxx) && same(fa.szz, fb.szz) && same(fa.sxz, fb.sxz));
+  EXPECT_TRUE(same(fa.plasticStrain, fb.plasticStrain));
+  const auto maxEps = *std::max_element(fa.plasticStrain.begin(), fa.plasticStrain.end());
+  EXPECT_GT(maxEps, 0.0);
+}
+
+// Snapshots carry the deviator, the plastic strain and the temperature with strength, and
+// nothing new without it.
+TEST(SphStrength, SnapshotFields) {
+  SphSolver solver(blocks(0.0, cases::EnergyForm::Compatible));
+  solver.advance(1e9);
+  const Snapshot snap = solver.snapshot();
+  for (const char* name : {"stress_deviator_xx", "stress_deviator_zz", "stress_deviator_xz",
+                           "stress_deviator_tt", "plastic_strain", "temperature"}) {
+    const auto it = std::find_if(snap.fields.begin(), snap.fields.end(),
+                                 [&](const Field& f) { return f.name == name; });
+    ASSERT_NE(it, snap.fields.end()) << name;
+    EXPECT_EQ(it->data.size(), solver.stepper().size());
+  }
+  cases::Scene s = blocks(0.0, cases::EnergyForm::Compatible);
+  s.effects.erase(Effect::Strength);
+  SphSolver hydro(s);
+  for (const Field& f : hydro.snapshot().fields) EXPECT_NE(f.name, "plastic_strain");
+}
+
+}  // namespace
+}  // namespace hvi::sph
