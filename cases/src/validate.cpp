@@ -185,12 +185,6 @@ void checkStrength(const TableReader& root, const Scene& scene) {
   if (scene.has(Effect::Strength) && !any)
     root.fail("effects", "\"strength\" is named but no material has a strength table",
               "[materials.<name>.strength] for the solids");
-  if (scene.has(Effect::Strength) && scene.solver == SolverKind::Sph &&
-      scene.geometry == Geometry::Axisymmetric)
-    root.fail("effects",
-              "\"strength\" is implemented by SPH in planar geometry only so far (the r-z hoop "
-              "stress terms are open, docs/strength.md)",
-              "geometry = \"planar\", or effects without \"strength\"");
 }
 
 void checkRiemann(const TableReader& root, const Scene& scene, const Sources& src, double tol) {

@@ -9,8 +9,9 @@ namespace hvi::shield::detail {
 std::vector<std::string> strengthEffects(cases::SolverKind solver) {
   // Looked up by name so that this file builds before and after the effects exist: once the
   // effect table names them and the solver supports them, every shield scene asks for them.
-  // Shield scenes are r-z; SPH has strength in planar geometry only so far (docs/strength.md,
-  // Open), so for SPH the effects stay off until its r-z hoop stress terms exist.
+  // SPH supports strength, but the material keys it needs are not written yet
+  // (strengthMaterialKeys below, docs/strength.md Open item 4): until then SPH shield scenes
+  // stay hydrodynamic rather than name an effect no material table feeds.
   if (solver == cases::SolverKind::Sph) return {};
   std::vector<std::string> on;
   for (const char* name : {"strength", "fracture"}) {

@@ -37,10 +37,6 @@ Stepper::Impl::Impl(const ParticleSystem& ps, std::vector<eos::Eos> mats, Steppe
   a.resize(n);
   forEachState(*this, [&ps](auto member, auto& v) { v = ps.*member; });
   if (!cfg.strength.empty()) {
-    if (rz)
-      throw InputError(
-          "SPH: the effect \"strength\" is implemented in planar geometry only so far "
-          "(docs/strength.md, Open): the r-z hoop stress terms are not written yet");
     if (cfg.strength.size() != materials.size() || cfg.strengthRho0.size() != materials.size())
       throw InputError("SPH strength: one entry per material is needed");
     strength = std::make_unique<detail::StrengthModel>(cfg.strength, cfg.strengthRho0, cfg.kernel,
@@ -232,7 +228,7 @@ double Stepper::step(double tStop) {
   const detail::Rates ratesN{s.ax0.data(), s.az0.data(), s.de0.data(), s.drho0.data(),
                              s.phi0.data()};
   s.passCached(a, s.n, s.list, s.cfg.visc, s.axis.get(), ratesN);
-  if (s.strength) s.strength->pass(a, s.n, s.list, true, ratesN);
+  if (s.strength) s.strength->pass(a, s.n, s.list, true, s.axis.get(), ratesN);
   double dt = s.timeStep();
   if (s.dt0 == 0.0 && dt > 0.0 && std::isfinite(dt)) s.dt0 = dt;
   // A collapsed step (common/solver.hpp): stop and name the particle.
@@ -296,7 +292,7 @@ double Stepper::step(double tStop) {
   }
   s.passFresh(a, s.n, s.list, s.cfg.visc, s.axis.get(), ratesHalf);
   // Before the compatible remainder: the stress accelerations are part of a^{n+1/2} - a^n.
-  if (s.strength) s.strength->pass(a, s.n, s.list, false, ratesHalf);
+  if (s.strength) s.strength->pass(a, s.n, s.list, false, s.axis.get(), ratesHalf);
   if (s.compatible) s.compatibleRemainder(half);
 
     // Full step with the half-state rates (midpoint rule: second order).

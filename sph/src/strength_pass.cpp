@@ -12,14 +12,22 @@ namespace hvi::sph::detail {
 namespace {
 
 // Each particle gathers over its own list, as the force pass does (fixed summation order, no
-// atomics). Velocity gradient over i's own object (as the continuity rate: bodies are separate
-// continua that meet at a contact), stress force and power over every pair (as the pressure:
-// the normal stress is continuous through a contact).
-template <class K, bool Cached, bool Pairs>
+// atomics). The velocity gradient, the stress force and the stress power all sum over every
+// pair (as the pressure does): the energy term then sums to exactly the stress power s : grad v
+// / rho of the gradient that drives s. (A gradient over the own object only, like the
+// continuity rate, was tried: at a contact next to the r-z axis it let the interface particles
+// run away, v_z 40 v0 at 1 us in SphStrength.ElasticWaveTravelsAtLongitudinalSpeedInRz.)
+//
+// r-z (docs/strength.md, "SPH with strength"): the in-plane tensor is weighted by the radius as
+// the pressure is (T = r s / rho^2), the pair sums are divided by r_i, and the hoop stress enters
+// as the pressure's hoop term does, H_i += sum_k mu_k (-r_k s_tt,k / rho_k^2) W_ik (k = i
+// included, times the axis correction), with a_r += H_i / r_i^2 and de += lam_i H_i / r_i (they
+// cancel particle by particle in the energy, as for the pressure).
+template <class K, bool RZ, bool Cached, bool Pairs>
 void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
                  const StressPoints& p, const double* sxx, const double* szz, const double* sxz,
-                 const double* g, double hFactor, int power, const Rates& out,
-                 const StressRates& rs) {
+                 const double* g, double hFactor, int power, const AxisCorrection* axis,
+                 const Rates& out, const StressRates& rs) {
   const std::size_t stride = list.stride;
   const long nr = static_cast<long>(nReal);
   const double q2dp = 1.0 / (hFactor * hFactor);  // (dp / h)^2
@@ -27,7 +35,6 @@ void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& li
   for (long il = 0; il < nr; ++il) {
     const std::size_t i = static_cast<std::size_t>(il);
     const double xi = a.x[i], zi = a.z[i], vxi = a.vx[i], vzi = a.vz[i], hi = a.h[i];
-    const int oi = a.obj[i];
     const Sym2 ti{p.txx[i], p.tzz[i], p.txz[i]}, ri{p.rxx[i], p.rzz[i], p.rxz[i]};
     const int* nb = list.index.data() + i * stride;
     const double* wc = list.w.data() + i * stride;
@@ -37,7 +44,7 @@ void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& li
     double* pwx = Pairs ? out.pairWx + i * stride : nullptr;
     double* pwz = Pairs ? out.pairWz + i * stride : nullptr;
     double gxx = 0.0, gxz = 0.0, gzx = 0.0, gzz = 0.0;
-    double sax = 0.0, saz = 0.0, sde = 0.0;
+    double sax = 0.0, saz = 0.0, sde = 0.0, shoop = 0.0;
     for (int k = 0; k < cnt; ++k) {
       const std::size_t j = static_cast<std::size_t>(nb[k]);
       const double hj = a.h[j];
@@ -59,13 +66,11 @@ void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& li
       const double f = K::gradFactor(w, r2, hij, ih2);
       const double gx = f * dx, gz = f * dz;  // grad_i W_ij
       const double dvx = vxi - a.vx[j], dvz = vzi - a.vz[j];
-      if (a.obj[j] == oi) {
-        const VelocityGradientTerm t = velocityGradientTerm(a.mu[j] / a.rho[j], -dvx, -dvz, gx, gz);
-        gxx += t.xx;
-        gxz += t.xz;
-        gzx += t.zx;
-        gzz += t.zz;
-      }
+      const VelocityGradientTerm t = velocityGradientTerm(a.mu[j] / a.rho[j], -dvx, -dvz, gx, gz);
+      gxx += t.xx;
+      gxz += t.xz;
+      gzx += t.zx;
+      gzz += t.zz;
       Sym2 tab{ti.xx + p.txx[j], ti.zz + p.tzz[j], ti.xz + p.txz[j]};
       if (power > 0) {
         const double fab = w / wdp;
@@ -75,6 +80,7 @@ void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& li
         tab.zz += fn * (ri.zz + p.rzz[j]);
         tab.xz += fn * (ri.xz + p.rxz[j]);
       }
+      if constexpr (RZ) shoop += a.mu[j] * p.htt[j] * w;
       const StressPairTerm st = stressPairTerm(tab, a.mu[j], dvx, dvz, gx, gz);
       sax += st.ax;
       saz += st.az;
@@ -86,10 +92,26 @@ void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& li
         pwz[k] += 0.5 * st.az;
       }
     }
-    out.ax[i] += sax;
-    out.az[i] += saz;
-    out.de[i] += sde;
-    const strength::VelocityGradient grad{gxx, gxz, gzx, gzz, 0.0};
+    double hoopRate = 0.0;
+    if constexpr (RZ) {
+      const double hoop = (shoop + a.mu[i] * p.htt[i] * K::value(0.0, hi)) * (*axis)(a.rw[i], hi);
+      const double inv = 1.0 / a.rw[i];
+      const double sgn = xi >= 0.0 ? 1.0 : -1.0;  // a particle briefly past the axis
+      const double hoopAx = sgn * hoop * inv * inv;
+      out.ax[i] += sax * inv + hoopAx;
+      out.az[i] += saz * inv;
+      out.de[i] += sde * inv + a.lam[i] * hoop * inv;
+      if constexpr (Pairs) {
+        if (out.hoopAx) out.hoopAx[i] += hoopAx;
+      }
+      hoopRate = -a.lam[i];  // v_r / r
+    } else {
+      (void)axis;
+      out.ax[i] += sax;
+      out.az[i] += saz;
+      out.de[i] += sde;
+    }
+    const strength::VelocityGradient grad{gxx, gxz, gzx, gzz, hoopRate};
     const strength::Deviator s{sxx[i], szz[i], sxz[i]};
     const strength::Deviator ds = strength::jaumannRate(s, grad, g[i]);
     rs.dsxx[i] = ds.xx;
@@ -99,17 +121,31 @@ void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& li
   }
 }
 
-template <class K>
+template <class K, bool RZ>
 void dispatch(bool cached, bool pairs, const PairArrays& a, std::size_t n,
               const NeighbourList& list, const StressPoints& p, const double* sxx,
               const double* szz, const double* sxz, const double* g, double hFactor, int power,
-              const Rates& out, const StressRates& rs) {
+              const AxisCorrection* axis, const Rates& out, const StressRates& rs) {
   if (cached)
-    stressPairs<K, true, false>(a, n, list, p, sxx, szz, sxz, g, hFactor, power, out, rs);
+    stressPairs<K, RZ, true, false>(a, n, list, p, sxx, szz, sxz, g, hFactor, power, axis, out, rs);
   else if (pairs)
-    stressPairs<K, false, true>(a, n, list, p, sxx, szz, sxz, g, hFactor, power, out, rs);
+    stressPairs<K, RZ, false, true>(a, n, list, p, sxx, szz, sxz, g, hFactor, power, axis, out, rs);
   else
-    stressPairs<K, false, false>(a, n, list, p, sxx, szz, sxz, g, hFactor, power, out, rs);
+    stressPairs<K, RZ, false, false>(a, n, list, p, sxx, szz, sxz, g, hFactor, power, axis, out,
+                                     rs);
+}
+
+template <class K>
+void dispatch(bool rz, bool cached, bool pairs, const PairArrays& a, std::size_t n,
+              const NeighbourList& list, const StressPoints& p, const double* sxx,
+              const double* szz, const double* sxz, const double* g, double hFactor, int power,
+              const AxisCorrection* axis, const Rates& out, const StressRates& rs) {
+  if (rz)
+    dispatch<K, true>(cached, pairs, a, n, list, p, sxx, szz, sxz, g, hFactor, power, axis, out,
+                      rs);
+  else
+    dispatch<K, false>(cached, pairs, a, n, list, p, sxx, szz, sxz, g, hFactor, power, axis, out,
+                       rs);
 }
 
 }  // namespace
@@ -192,7 +228,7 @@ double StrengthModel::temperature(const PairArrays& a, const double* e, int mat,
 void StrengthModel::refreshPoints(const PairArrays& a, std::size_t n, const double* e,
                                   const int* mat, const Boundaries& bounds) {
   const std::size_t total = a.size();
-  for (auto* v : {&pts_.txx, &pts_.tzz, &pts_.txz, &pts_.rxx, &pts_.rzz, &pts_.rxz})
+  for (auto* v : {&pts_.txx, &pts_.tzz, &pts_.txz, &pts_.rxx, &pts_.rzz, &pts_.rxz, &pts_.htt})
     if (v->size() < total) v->resize(total);
   const long nl = static_cast<long>(n);
 #pragma omp parallel for schedule(static) if (nl > kParallelElements)
@@ -203,7 +239,7 @@ void StrengthModel::refreshPoints(const PairArrays& a, std::size_t n, const doub
     if (!solids_[k]) {
       g_[i] = 0.0;
       cL[i] = a.c[i];
-      pts_.txx[i] = pts_.tzz[i] = pts_.txz[i] = 0.0;
+      pts_.txx[i] = pts_.tzz[i] = pts_.txz[i] = pts_.htt[i] = 0.0;
       pts_.rxx[i] = pts_.rzz[i] = pts_.rxz[i] = 0.0;
       continue;
     }
@@ -212,30 +248,35 @@ void StrengthModel::refreshPoints(const PairArrays& a, std::size_t n, const doub
     const double g = strength::shearModulus(sm, a.p[i], sm.thermal.temperature(eta, e[i]), eta);
     g_[i] = g;
     cL[i] = strength::longitudinalSoundSpeed(a.c[i], g, rho);
-    const double ir2 = 1.0 / (rho * rho);
+    // The radius weight rw (1 in planar geometry) as in the pressure's q = rw P / rho^2.
+    const double rw = a.rw[i];
+    const double ir2 = rw / (rho * rho);
     pts_.txx[i] = sxx[i] * ir2;
     pts_.tzz[i] = szz[i] * ir2;
     pts_.txz[i] = sxz[i] * ir2;
+    pts_.htt[i] = (sxx[i] + szz[i]) * ir2;  // -rw s_tt / rho^2
     Sym2 r;
     if (power_ > 0) r = artificialStress({sxx[i] - a.p[i], szz[i] - a.p[i], sxz[i]}, rho, epsilon_);
-    pts_.rxx[i] = r.xx;
-    pts_.rzz[i] = r.zz;
-    pts_.rxz[i] = r.xz;
+    pts_.rxx[i] = rw * r.xx;
+    pts_.rzz[i] = rw * r.zz;
+    pts_.rxz[i] = rw * r.xz;
   }
   bounds.mirrorGhostTensors(pts_.txx.data(), pts_.tzz.data(), pts_.txz.data(), n);
   bounds.mirrorGhostTensors(pts_.rxx.data(), pts_.rzz.data(), pts_.rxz.data(), n);
+  bounds.copyGhostScalars(pts_.htt.data(), n);
 }
 
 void StrengthModel::pass(const PairArrays& a, std::size_t n, const NeighbourList& list, bool cached,
-                         const Rates& out) {
+                         const AxisCorrection* axis, const Rates& out) {
   const StressRates rs{dsxx_.data(), dszz_.data(), dsxz_.data(), rate_.data()};
   const bool pairs = !cached && out.pairWx != nullptr;
+  const bool rz = axis != nullptr;
   if (kernel_ == cases::Kernel::Gaussian)
-    dispatch<GaussianKernel>(cached, pairs, a, n, list, pts_, sxx.data(), szz.data(), sxz.data(),
-                             g_.data(), hFactor_, power_, out, rs);
+    dispatch<GaussianKernel>(rz, cached, pairs, a, n, list, pts_, sxx.data(), szz.data(),
+                             sxz.data(), g_.data(), hFactor_, power_, axis, out, rs);
   else
-    dispatch<CubicSplineKernel>(cached, pairs, a, n, list, pts_, sxx.data(), szz.data(), sxz.data(),
-                                g_.data(), hFactor_, power_, out, rs);
+    dispatch<CubicSplineKernel>(rz, cached, pairs, a, n, list, pts_, sxx.data(), szz.data(),
+                                sxz.data(), g_.data(), hFactor_, power_, axis, out, rs);
 }
 
 }  // namespace hvi::sph::detail

@@ -18,8 +18,9 @@ namespace hvi::sph::detail {
 
 //! What a stress pass reads of every point (reals, then ghosts mirrored as tensors).
 struct StressPoints {
-  std::vector<double> txx, tzz, txz;  //!< s / rho^2
-  std::vector<double> rxx, rzz, rxz;  //!< Monaghan's artificial stress R (already / rho^2)
+  std::vector<double> txx, tzz, txz;  //!< rw s / rho^2 (rw = r in r-z, 1 planar)
+  std::vector<double> rxx, rzz, rxz;  //!< rw times Monaghan's artificial stress R (/ rho^2)
+  std::vector<double> htt;            //!< r-z hoop: -rw s_tt / rho^2 (the pressure's q part)
 };
 
 //! Velocity gradient and the deviator's rate of the real particles, written by a stress pass.
@@ -65,8 +66,9 @@ class StrengthModel {
   //! Adds the stress force and stress power of every pair to `out` (ax, az, de and, when
   //! `out.pairWx` is set, the compatible energy's pair data with the even share 1/2), and
   //! writes the deviator's Jaumann rate.
+  //! `axis`: the r-z axis correction of the hoop term (null in planar geometry).
   void pass(const PairArrays& a, std::size_t n, const NeighbourList& list, bool cached,
-            const Rates& out);
+            const AxisCorrection* axis, const Rates& out);
 
   //! Temperature of real particle i (snapshots), K.
   [[nodiscard]] double temperature(const PairArrays& a, const double* e, int mat,
