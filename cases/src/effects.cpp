@@ -25,7 +25,7 @@ constexpr std::array<EffectInfo, 9> kEffects{{
 constexpr std::array kSph{Effect::ArtificialViscosity, Effect::TensionCutoff,
                           Effect::MassAdjustment,      Effect::PhaseBookkeeping,
                           Effect::EnergyBudget,        Effect::Features,
-                          Effect::Strength};
+                          Effect::Strength,            Effect::Fracture};
 constexpr std::array kTvd{Effect::TensionCutoff, Effect::MaterialInterfaces,
                           Effect::PhaseBookkeeping, Effect::EnergyBudget, Effect::Features};
 constexpr std::array kRiemann{Effect::EnergyBudget};  // the exact solution has no physics to add

@@ -60,6 +60,7 @@ StepperConfig stepperConfig(const cases::Scene& scene) {
       cfg.strengthRho0.push_back(mat.rho0());
     }
     cfg.hFactor = scene.sph.hFactor;
+    cfg.fracture = scene.has(cases::Effect::Fracture);
   }
   return cfg;
 }
@@ -126,6 +127,7 @@ Snapshot SphSolver::snapshot() const {
     add("stress_deviator_xz", units::pressureName, f.sxz);
     add("stress_deviator_tt", units::pressureName, f.stt);
     add("plastic_strain", "1", f.plasticStrain);
+    if (scene_.has(cases::Effect::Fracture)) add("damage", "1", f.damage);
     add("temperature", "K", f.temperature);
   }
   for (const auto& mat : scene_.materials) s.materialNames.push_back(mat.name);

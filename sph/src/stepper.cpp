@@ -41,7 +41,7 @@ Stepper::Impl::Impl(const ParticleSystem& ps, std::vector<eos::Eos> mats, Steppe
       throw InputError("SPH strength: one entry per material is needed");
     strength = std::make_unique<detail::StrengthModel>(cfg.strength, cfg.strengthRho0, cfg.kernel,
                                                        cfg.hFactor, cfg.artificialStress,
-                                                       cfg.artificialStressPower);
+                                                       cfg.artificialStressPower, cfg.fracture);
     strength->resize(n);
   }
   t = cfg.time;
@@ -108,6 +108,7 @@ void Stepper::Impl::corrector() {
   bounds.makeGhosts(a, n, radiusFactor * hmax);
   passList(a, n, radiusFactor, grid, list, a.rho.data());
   detail::evaluateEos(materials, mat.data(), a.rho.data(), e.data(), a.p.data(), a.c.data(), n);
+  if (strength) strength->limitTension(a, n, mat.data(), true);
   checkState("corrector (summation density)");
   deriveRates();
   bounds.refreshGhosts(a, n);
@@ -267,6 +268,7 @@ double Stepper::step(double tStop) {
   }
   detail::evaluateEos(s.materials, s.mat.data(), a.rho.data(), s.e.data(), a.p.data(), a.c.data(),
                       s.n);
+  if (s.strength) s.strength->limitTension(a, s.n, s.mat.data(), false);
   s.deriveWeights();
   s.checkState("predictor (continuity density)");
   s.deriveRates();
@@ -349,6 +351,7 @@ StrengthFields Stepper::strengthFields() const {
   copy(f.szz, s.strength->szz);
   copy(f.sxz, s.strength->sxz);
   copy(f.plasticStrain, s.strength->epsP);
+  copy(f.damage, s.strength->damage);
   f.stt.resize(s.n);
   f.temperature.resize(s.n);
   for (std::size_t i = 0; i < s.n; ++i) {

@@ -2,6 +2,8 @@
 //! stress pair terms of pair_stress.hpp summed over the neighbour lists.
 #include "detail/strength_pass.hpp"
 
+#include <algorithm>
+#include <type_traits>
 #include <variant>
 
 #include "detail/parallel.hpp"
@@ -148,17 +150,61 @@ void dispatch(bool rz, bool cached, bool pairs, const PairArrays& a, std::size_t
                        rs);
 }
 
+// Damage growth over a step (effect fracture, docs/strength.md): Grady-Kipp tensile damage as in
+// Benz and Asphaug (1995), deterministic per particle, with the particle's volume dp^3 and
+// radius dp / 2 (dp = h / h_factor, the fill's spacing), or Johnson and Cook's (1985) failure
+// strain.
+template <class Law>
+double growDamage(const strength::Material& sm, const Law& law, double d, double dt, double p,
+                  double rho, double c, double g, double cL, double dp,
+                  const strength::YieldInput& in, const strength::Deviator& s,
+                  const strength::ReturnResult& rr) {
+  if (const auto* gk = std::get_if<strength::GradyKipp>(&sm.damage)) {
+    const double sigma1 = strength::maxPrincipalStress(s, p);
+    if (sigma1 <= 0.0) return d;
+    const double e = strength::youngsModulus(rho * c * c, g);
+    const double eps = sigma1 / (std::max(1.0 - d, 1e-12) * e);
+    if (eps < gk->activationStrain(dp * dp * dp)) return d;
+    return strength::GradyKipp::grow(d, dt, gk->crackSpeed * cL, 0.5 * dp);
+  }
+  if (const auto* jc = std::get_if<strength::JohnsonCookFailure>(&sm.damage)) {
+    if (rr.plasticStrain <= 0.0) return d;
+    const double seq = strength::vonMises(s);
+    const double triax = seq > 0.0 ? -p / seq : 0.0;
+    double th = 0.0;
+    if constexpr (std::is_same_v<Law, strength::JohnsonCook>) th = law.homologous(in.temperature);
+    const double ef = jc->failureStrain(triax, in.strainRate, th);
+    return ef > 0.0 ? std::min(d + rr.plasticStrain / ef, 1.0) : 1.0;
+  }
+  (void)law;
+  return d;
+}
+
 }  // namespace
 
 StrengthModel::StrengthModel(std::vector<std::optional<strength::Material>> solids,
                              std::vector<double> rho0, cases::Kernel kernel, double hFactor,
-                             double epsilon, int power)
+                             double epsilon, int power, bool fracture)
     : solids_(std::move(solids)),
       rho0_(std::move(rho0)),
       kernel_(kernel),
       hFactor_(hFactor),
       epsilon_(epsilon),
-      power_(epsilon > 0.0 ? power : 0) {}
+      power_(epsilon > 0.0 ? power : 0),
+      fracture_(fracture) {}
+
+void StrengthModel::limitTension(PairArrays& a, std::size_t n, const int* mat, bool atStepEnd) {
+  if (!fracture_) return;
+  const long nl = static_cast<long>(n);
+#pragma omp parallel for schedule(static) if (nl > kParallelElements)
+  for (long il = 0; il < nl; ++il) {
+    const std::size_t i = static_cast<std::size_t>(il);
+    const auto& sm = solids_[static_cast<std::size_t>(mat[i])];
+    if (!sm) continue;
+    if (atStepEnd && a.p[i] < -sm->spallStrength) damage[i] = 1.0;
+    a.p[i] = strength::effectivePressure(a.p[i], damage[i], sm->spallStrength);
+  }
+}
 
 void StrengthModel::resize(std::size_t n) {
   forEachState(*this, [n](auto& v) { v.resize(n, 0.0); });
@@ -207,11 +253,18 @@ void StrengthModel::advance(double dt, std::size_t n, const PairArrays& a, const
             const double eta = a.rho[i] / rho0;
             const strength::YieldInput in{epsP[i], rate_[i], a.p[i],
                                           sm.thermal.temperature(eta, e[i]), eta};
-            const strength::ReturnResult rr = strength::radialReturn(s, law.yield(in), g_[i]);
+            // Damaged material keeps (1 - D) of its shear strength (docs/strength.md).
+            const double d = damage[i];
+            const strength::ReturnResult rr =
+                strength::radialReturn(s, (1.0 - d) * law.yield(in), g_[i]);
             sxx[i] = s.xx;
             szz[i] = s.zz;
             sxz[i] = s.xz;
-            if (accumulate) epsP[i] += rr.plasticStrain;
+            if (!accumulate) continue;
+            epsP[i] += rr.plasticStrain;
+            if (fracture_ && d < 1.0)
+              damage[i] = growDamage(sm, law, d, dt, a.p[i], a.rho[i], a.c[i], g_[i], cL[i],
+                                     a.h[i] / hFactor_, in, s, rr);
           }
         },
         sm.yield);

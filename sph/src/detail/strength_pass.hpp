@@ -36,17 +36,20 @@ class StrengthModel {
   //! `solids[k]`: material k's strength (nullopt: a fluid, its deviator stays 0); `rho0[k]` its
   //! reference density (compression eta = rho / rho0 for temperature and melt).
   //! `hFactor` = h / dp sets W(dp) of the artificial stress; `epsilon`, `power` its constants.
+  //! `fracture`: the effect fracture (docs/strength.md, "Damage and spall").
   StrengthModel(std::vector<std::optional<strength::Material>> solids, std::vector<double> rho0,
-                cases::Kernel kernel, double hFactor, double epsilon, int power);
+                cases::Kernel kernel, double hFactor, double epsilon, int power, bool fracture);
 
   // State of the real particles (checkpointed; StrengthModel::forEachState's order).
   std::vector<double> sxx, szz, sxz, epsP;
+  std::vector<double> damage;  //!< D in [0, 1] (0 without fracture)
   template <class Self, class F>
   static void forEachState(Self& s, F&& f) {
     f(s.sxx);
     f(s.szz);
     f(s.sxz);
     f(s.epsP);
+    f(s.damage);
   }
 
   //! New real particles start unstressed (construction); the state keeps its values.
@@ -59,6 +62,11 @@ class StrengthModel {
   //! of the material at (rho, P, e); `accumulate`: the step's end, where eps_p grows.
   void advance(double dt, std::size_t n, const PairArrays& a, const double* e, const int* mat,
                bool accumulate);
+  //! Effect fracture, right after the EOS of a state: a solid's tension is limited to its spall
+  //! strength and scaled by 1 - D (`strength::effectivePressure`). `atStepEnd` (the corrector's
+  //! state): a solid whose EOS tension exceeds its spall strength fails, D = 1 (the hydrocodes'
+  //! pressure-cut-off spall). No-op without fracture.
+  void limitTension(PairArrays& a, std::size_t n, const int* mat, bool atStepEnd);
   //! After the EOS of a state: shear modulus, longitudinal sound speed, s / rho^2 and the
   //! artificial stress of the reals, then of the ghosts (mirrored).
   void refreshPoints(const PairArrays& a, std::size_t n, const double* e, const int* mat,
@@ -82,6 +90,7 @@ class StrengthModel {
   cases::Kernel kernel_;
   double hFactor_, epsilon_;
   int power_;
+  bool fracture_;
   std::vector<double> g_;  // shear modulus of the reals at the last refresh, Mbar
   std::vector<double> sxx0_, szz0_, sxz0_, dsxx_, dszz_, dsxz_, rate_;
   StressPoints pts_;

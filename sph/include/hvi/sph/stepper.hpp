@@ -30,7 +30,8 @@ struct StepperConfig {
   //! hydrodynamic scheme, nothing allocated).
   std::vector<std::optional<strength::Material>> strength;
   std::vector<double> strengthRho0;
-  double hFactor = 1.0;  //!< h / dp: W(dp) of the artificial stress
+  bool fracture = false;  //!< effect fracture (with strength): spall strength and damage
+  double hFactor = 1.0;   //!< h / dp: W(dp) of the artificial stress
   //! Monaghan's (2000) artificial stress with strength: epsilon and the exponent n of
   //! f_ab^n (Gray, Monaghan and Swift 2001: 0.3 and 4); epsilon = 0 switches it off.
   double artificialStress = 0.3;
@@ -41,6 +42,7 @@ struct StepperConfig {
 struct StrengthFields {
   std::vector<double> sxx, szz, sxz, stt;  //!< deviatoric stress, Mbar (stt = -(sxx + szz))
   std::vector<double> plasticStrain;       //!< equivalent plastic strain
+  std::vector<double> damage;              //!< D in [0, 1]
   std::vector<double> temperature;         //!< K (docs/strength.md, Temperature); 0 for fluids
 };
 
