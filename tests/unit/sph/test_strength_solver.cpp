@@ -441,11 +441,12 @@ struct Spall {
   int failed;
   double meanDepth, spread, energyDrift;
 };
-Spall symmetricSpall(double spallStrength) {
+Spall symmetricSpall(double spallStrength, strength::DamageModel damage = strength::NoDamage{}) {
   const double dx = 0.01, d = 0.2;
   cases::Scene s = slab(dx, 4, 2 * d, d, 0.02, 1.0, true);
   s.effects.insert(Effect::Fracture);
   s.materials[0].strength->spallStrength = spallStrength;
+  s.materials[0].strength->damage = damage;
   SphSolver solver(s);
   const double e0 = solver.totals().energy();
   const double tEnd = 5.0 * d / 0.633;  // the releases meet at 3 d / c_L
@@ -479,6 +480,26 @@ TEST(SphStrength, SymmetricImpactSpallsWhereTheReleasesMeet) {
   EXPECT_LT(std::abs(weak.energyDrift), 1e-12);
   EXPECT_NEAR(weak.meanDepth, 0.2, 0.03);
   EXPECT_EQ(strong.failed, 0);
+}
+
+// The same impact with Grady-Kipp tensile damage (Benz and Asphaug 1995) and no spall-strength
+// failure (3 GPa, above the tension): the flaws of the particle volume dp^3 = 1e-6 cm^3 with
+// k = 1e24 cm^-3, m = 9 activate at eps_min = (k V)^(-1/m) = 0.01, below the tensile strain at the
+// meeting plane (1.7 GPa / E = 0.023, E = 9KG / (3K + G) = 74 GPa) and above anything elsewhere;
+// cracks then grow at 0.4 c_L over the particle radius (D = 1 within ~0.02 us). The failed
+// layer must sit where the releases meet (bound as above); with k = 1e10 (eps_min ~ 5) no
+// particle is damaged.
+TEST(SphStrength, GradyKippDamageSpallsWhereTheReleasesMeet) {
+  const Spall gk = symmetricSpall(0.03, strength::GradyKipp{1e24, 9.0, 0.4});
+  const Spall none = symmetricSpall(0.03, strength::GradyKipp{1e10, 9.0, 0.4});
+  std::printf(
+      "Grady-Kipp: %d failed at mean depth %.4f cm (spread %.3f), dE/E = %.1e; "
+      "k = 1e10: %d failed\n",
+      gk.failed, gk.meanDepth, gk.spread, gk.energyDrift, none.failed);
+  EXPECT_GT(gk.failed, 0);
+  EXPECT_NEAR(gk.meanDepth, 0.2, 0.03);
+  EXPECT_LT(std::abs(gk.energyDrift), 1e-12);
+  EXPECT_EQ(none.failed, 0);
 }
 
 // Colliding elastic rings (Gray, Monaghan and Swift 2001, J. Comput. Phys. 191, the rubber
