@@ -1,6 +1,8 @@
 //! @file Throughput of the SPH solver on variant 2 (rod on plate, planar, ~88 000 particles).
 //!
-//! Usage: hvi_bench_sph [t_end_us=5] [max_steps=-1] [spacing_cm=0.01]
+//! Usage: hvi_bench_sph [t_end_us=5] [max_steps=-1] [spacing_cm=0.01] [strength=0]
+//! strength = 1: the same impact with the effect strength (6061-T6 Steinberg-Guinan preset for
+//! both bodies) instead of the tension cut-off, for the cost ratio of docs/strength.md.
 //! Prints setup time (fill + mass iteration), steps, wall time and particle-updates per
 //! second per thread. Run with OMP_NUM_THREADS set to the cores to measure.
 #include <chrono>
@@ -13,12 +15,13 @@
 
 #include "hvi/common/units.hpp"
 #include "hvi/sph/sph.hpp"
+#include "hvi/strength/strength.hpp"
 
 namespace {
 
 using hvi::cases::Effect;
 
-hvi::cases::Scene variant2(double spacing) {
+hvi::cases::Scene variant2(double spacing, bool strength) {
   hvi::cases::Scene s;
   s.path = "bench:variant2";
   s.title = "rod d = 1 cm at 6.18 km/s on a 0.4 cm aluminium plate";
@@ -39,6 +42,10 @@ hvi::cases::Scene variant2(double spacing) {
   s.sph.spacing = spacing;
   s.effects = {Effect::ArtificialViscosity, Effect::MassAdjustment, Effect::TensionCutoff};
   s.tEnd = 5.0;
+  if (strength) {
+    s.materials[0].strength = hvi::strength::findPreset("al6061_t6")->material;
+    s.effects = {Effect::ArtificialViscosity, Effect::MassAdjustment, Effect::Strength};
+  }
   return s;
 }
 
@@ -52,12 +59,13 @@ int main(int argc, char** argv) {
   const double tEnd = argc > 1 ? std::atof(argv[1]) : 5.0;
   const long maxSteps = argc > 2 ? std::atol(argv[2]) : -1;
   const double spacing = argc > 3 ? std::atof(argv[3]) : 0.01;
+  const bool strength = argc > 4 && std::atoi(argv[4]) != 0;
   int threads = 1;
 #ifdef _OPENMP
   threads = omp_get_max_threads();
 #endif
   const auto t0 = std::chrono::steady_clock::now();
-  hvi::sph::SphSolver solver(variant2(spacing));
+  hvi::sph::SphSolver solver(variant2(spacing, strength));
   const double setup = seconds(t0);
   std::printf("variant 2: %ld particles (mass iteration: %d iterations, %zu deleted), setup "
               "%.2f s, %d threads\n",

@@ -24,7 +24,8 @@ constexpr std::array<EffectInfo, 9> kEffects{{
 // What each solver implements, in the order its messages list them.
 constexpr std::array kSph{Effect::ArtificialViscosity, Effect::TensionCutoff,
                           Effect::MassAdjustment,      Effect::PhaseBookkeeping,
-                          Effect::EnergyBudget,        Effect::Features};
+                          Effect::EnergyBudget,        Effect::Features,
+                          Effect::Strength,            Effect::Fracture};
 constexpr std::array kTvd{Effect::TensionCutoff, Effect::MaterialInterfaces,
                           Effect::PhaseBookkeeping, Effect::EnergyBudget, Effect::Features};
 constexpr std::array kRiemann{Effect::EnergyBudget};  // the exact solution has no physics to add

@@ -182,6 +182,10 @@ void checkStrength(const TableReader& root, const Scene& scene) {
               "[" + t->path() + ".strength] with spall_strength (a preset, or model and its keys)");
     any = any || m.strength.has_value();
   }
+  if (fracture && !scene.has(Effect::Strength))
+    root.fail("effects",
+              "\"fracture\" removes tensile and shear strength that \"strength\" gives: name both",
+              "effects = [..., \"strength\", \"fracture\"]");
   if (scene.has(Effect::Strength) && !any)
     root.fail("effects", "\"strength\" is named but no material has a strength table",
               "[materials.<name>.strength] for the solids");

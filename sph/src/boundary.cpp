@@ -87,6 +87,15 @@ void Boundaries::copyGhostScalars(double* v, std::size_t n) const {
     v[n + g] = v[static_cast<std::size_t>(parent_[g])];
 }
 
+void Boundaries::mirrorGhostTensors(double* xx, double* zz, double* xz, std::size_t n) const {
+  for (std::size_t g = 0; g < parent_.size(); ++g) {
+    const std::size_t p = static_cast<std::size_t>(parent_[g]);
+    xx[n + g] = xx[p];
+    zz[n + g] = zz[p];
+    xz[n + g] = transform_[g].sx * transform_[g].sz * xz[p];
+  }
+}
+
 bool Boundaries::outflowed(double x, double z) const {
   return (outflow_[0] && x < domain_.xmin) || (outflow_[1] && x > domain_.xmax) ||
          (outflow_[2] && z < domain_.zmin) || (outflow_[3] && z > domain_.zmax);

@@ -37,6 +37,10 @@ void Stepper::writeState(std::ostream& out) const {
   // The per-particle state (Impl::forEachState, in its order); the particle count is stored
   // once before it, so the arrays go without counts.
   Impl::forEachState(s, [&](auto, const auto& v) { w.elements(v.data(), s.n); });
+  // With strength the deviator and plastic strain follow (a scene without it: the format above).
+  if (s.strength)
+    detail::StrengthModel::forEachState(*s.strength,
+                                        [&](const auto& v) { w.elements(v.data(), s.n); });
 }
 
 void Stepper::readState(std::istream& in) {
@@ -65,6 +69,10 @@ void Stepper::readState(std::istream& in) {
   s.n = n;
   s.a.resize(n);
   Impl::forEachState(s, [&](auto, auto& v) { r.elements(v, n); });
+  if (s.strength) {
+    s.strength->resize(n);
+    detail::StrengthModel::forEachState(*s.strength, [&](auto& v) { r.elements(v, n); });
+  }
   for (int k : s.mat)
     if (k < 0 || k >= nmat) throw InputError("SPH checkpoint: material index out of range");
   s.resizeWork();

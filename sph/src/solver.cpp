@@ -54,6 +54,14 @@ StepperConfig stepperConfig(const cases::Scene& scene) {
   cfg.domain = scene.domain;
   cfg.time = scene.tStart;
   for (const auto& body : scene.bodies) cfg.objectNames.push_back(body.name);
+  if (scene.has(cases::Effect::Strength)) {
+    for (const auto& mat : cases::resolveMaterials(scene)) {
+      cfg.strength.push_back(mat.strength);
+      cfg.strengthRho0.push_back(mat.rho0());
+    }
+    cfg.hFactor = scene.sph.hFactor;
+    cfg.fracture = scene.has(cases::Effect::Fracture);
+  }
   return cfg;
 }
 
@@ -106,6 +114,21 @@ Snapshot SphSolver::snapshot() const {
     }
     s.fields.push_back(std::move(frac));
     s.fields.push_back(std::move(phase));
+  }
+  if (scene_.has(cases::Effect::Strength)) {
+    // docs/strength.md, "SPH": the deviator (stt = -(sxx + szz): the out-of-plane component in
+    // plane strain), the equivalent plastic strain and the temperature model's T.
+    const StrengthFields f = stepper_->strengthFields();
+    const auto add = [&](const char* name, const char* unit, const std::vector<double>& v) {
+      s.fields.push_back({name, unit, 1, v});
+    };
+    add("stress_deviator_xx", units::pressureName, f.sxx);
+    add("stress_deviator_zz", units::pressureName, f.szz);
+    add("stress_deviator_xz", units::pressureName, f.sxz);
+    add("stress_deviator_tt", units::pressureName, f.stt);
+    add("plastic_strain", "1", f.plasticStrain);
+    if (scene_.has(cases::Effect::Fracture)) add("damage", "1", f.damage);
+    add("temperature", "K", f.temperature);
   }
   for (const auto& mat : scene_.materials) s.materialNames.push_back(mat.name);
   for (const auto& body : scene_.bodies) s.objectNames.push_back(body.name);

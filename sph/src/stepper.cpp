@@ -36,6 +36,14 @@ Stepper::Impl::Impl(const ParticleSystem& ps, std::vector<eos::Eos> mats, Steppe
           fmt::format("particle material {} is not one of the {} materials", k, materials.size()));
   a.resize(n);
   forEachState(*this, [&ps](auto member, auto& v) { v = ps.*member; });
+  if (!cfg.strength.empty()) {
+    if (cfg.strength.size() != materials.size() || cfg.strengthRho0.size() != materials.size())
+      throw InputError("SPH strength: one entry per material is needed");
+    strength = std::make_unique<detail::StrengthModel>(cfg.strength, cfg.strengthRho0, cfg.kernel,
+                                                       cfg.hFactor, cfg.artificialStress,
+                                                       cfg.artificialStressPower, cfg.fracture);
+    strength->resize(n);
+  }
   t = cfg.time;
   resizeWork();
   corrector();
@@ -100,9 +108,11 @@ void Stepper::Impl::corrector() {
   bounds.makeGhosts(a, n, radiusFactor * hmax);
   passList(a, n, radiusFactor, grid, list, a.rho.data());
   detail::evaluateEos(materials, mat.data(), a.rho.data(), e.data(), a.p.data(), a.c.data(), n);
+  if (strength) strength->limitTension(a, n, mat.data(), true);
   checkState("corrector (summation density)");
   deriveRates();
   bounds.refreshGhosts(a, n);
+  if (strength) strength->refreshPoints(a, n, e.data(), mat.data(), bounds);
 }
 
 void Stepper::Impl::compatibleRemainder(double half) {
@@ -128,7 +138,8 @@ double Stepper::Impl::particleTimeStep(std::size_t i, bool* byAcceleration) cons
   const double v = std::hypot(a.vx[i], a.vz[i]);
   // Monaghan (1989): signal speed c + 0.6 (alpha c + beta max|phi|); |v| as well, which
   // also bounds the motion in the half step (the list skin relies on it).
-  double signal = a.c[i] + v;
+  // With strength the fastest signal is the longitudinal (P) wave, c_L^2 = c^2 + 4G / (3 rho).
+  double signal = (strength ? strength->cL[i] : a.c[i]) + v;
   if (cfg.viscosity) signal += 0.6 * (cfg.visc.alpha * a.c[i] + cfg.visc.beta * std::abs(phi0[i]));
   const double dtSignal = cfg.cfl * a.h[i] / signal;
   const double acc = std::hypot(ax0[i], az0[i]);
@@ -193,6 +204,7 @@ void Stepper::Impl::removeOutflow() {
       if (keep[i]) v[k++] = v[i];
     v.resize(n);
   });
+  if (strength) strength->compact(keep, n0, n);
   a.resize(n);
   resizeWork();
 }
@@ -217,6 +229,7 @@ double Stepper::step(double tStop) {
   const detail::Rates ratesN{s.ax0.data(), s.az0.data(), s.de0.data(), s.drho0.data(),
                              s.phi0.data()};
   s.passCached(a, s.n, s.list, s.cfg.visc, s.axis.get(), ratesN);
+  if (s.strength) s.strength->pass(a, s.n, s.list, true, s.axis.get(), ratesN);
   double dt = s.timeStep();
   if (s.dt0 == 0.0 && dt > 0.0 && std::isfinite(dt)) s.dt0 = dt;
   // A collapsed step (common/solver.hpp): stop and name the particle.
@@ -255,10 +268,18 @@ double Stepper::step(double tStop) {
   }
   detail::evaluateEos(s.materials, s.mat.data(), a.rho.data(), s.e.data(), a.p.data(), a.c.data(),
                       s.n);
+  if (s.strength) s.strength->limitTension(a, s.n, s.mat.data(), false);
   s.deriveWeights();
   s.checkState("predictor (continuity density)");
   s.deriveRates();
   s.bounds.refreshGhosts(a, s.n);
+  if (s.strength) {
+    // The deviator's predictor with the rate of state n, returned to the yield surface of
+    // the half state (no plastic strain counted: the step's end counts it).
+    s.strength->beginStep(s.n);
+    s.strength->advance(half, s.n, a, s.e.data(), s.mat.data(), false);
+    s.strength->refreshPoints(a, s.n, s.e.data(), s.mat.data(), s.bounds);
+  }
   detail::Rates ratesHalf{s.ax1.data(), s.az1.data(), s.de1.data(), nullptr, nullptr};
   if (s.compatible) {
     // Grows only with the list's stride (set by the corrector's list build).
@@ -272,6 +293,8 @@ double Stepper::step(double tStop) {
     ratesHalf.hoopAx = s.rz ? s.hoopAx.data() : nullptr;
   }
   s.passFresh(a, s.n, s.list, s.cfg.visc, s.axis.get(), ratesHalf);
+  // Before the compatible remainder: the stress accelerations are part of a^{n+1/2} - a^n.
+  if (s.strength) s.strength->pass(a, s.n, s.list, false, s.axis.get(), ratesHalf);
   if (s.compatible) s.compatibleRemainder(half);
 
     // Full step with the half-state rates (midpoint rule: second order).
@@ -283,6 +306,8 @@ double Stepper::step(double tStop) {
     a.vz[i] = s.vz0[i] + dt * s.az1[i];
     s.e[i] = s.e0[i] + dt * s.de1[i];
   }
+  // The deviator's full step with the half-state rate; the yield at the half state's rho, P.
+  if (s.strength) s.strength->advance(dt, s.n, a, s.e.data(), s.mat.data(), true);
   s.removeOutflow();
   s.t = (s.t + dt >= tStop) ? tStop : s.t + dt;
   ++s.steps;
@@ -313,6 +338,27 @@ ParticleSystem Stepper::particles() const {
   Impl::forEachState(s, copy);
   Impl::forEachDerived(s, copy);
   return ps;
+}
+
+StrengthFields Stepper::strengthFields() const {
+  const Impl& s = *impl_;
+  StrengthFields f;
+  if (!s.strength) return f;
+  const auto copy = [&](std::vector<double>& to, const std::vector<double>& from) {
+    to.assign(from.begin(), from.begin() + static_cast<std::ptrdiff_t>(s.n));
+  };
+  copy(f.sxx, s.strength->sxx);
+  copy(f.szz, s.strength->szz);
+  copy(f.sxz, s.strength->sxz);
+  copy(f.plasticStrain, s.strength->epsP);
+  copy(f.damage, s.strength->damage);
+  f.stt.resize(s.n);
+  f.temperature.resize(s.n);
+  for (std::size_t i = 0; i < s.n; ++i) {
+    f.stt[i] = -(f.sxx[i] + f.szz[i]);
+    f.temperature[i] = s.strength->temperature(s.a, s.e.data(), s.mat[i], i);
+  }
+  return f;
 }
 
 Totals Stepper::totals() const {

@@ -27,6 +27,9 @@ class Boundaries {
   void mirrorGhostVectors(double* vx, double* vz, std::size_t n) const;
   //! Sets the ghost entries [n, n + ghosts) of a scalar field to their parents'.
   void copyGhostScalars(double* v, std::size_t n) const;
+  //! Sets the ghost entries of a symmetric in-plane tensor (xx, zz, xz) to their parents':
+  //! a mirror normal to x or to z keeps xx and zz and changes the sign of xz (strength).
+  void mirrorGhostTensors(double* xx, double* zz, double* xz, std::size_t n) const;
   [[nodiscard]] std::size_t ghostCount() const { return parent_.size(); }
 
   //! True if (x, z) lies beyond an outflow side of the domain.

@@ -8,6 +8,7 @@
 #include "detail/arrays.hpp"
 #include "detail/boundary.hpp"
 #include "detail/passes.hpp"
+#include "detail/strength_pass.hpp"
 #include "hvi/sph/stepper.hpp"
 
 namespace hvi::sph {
@@ -62,6 +63,7 @@ struct Stepper::Impl {
   detail::ListPass passList = nullptr;
   detail::Boundaries bounds;
   std::unique_ptr<detail::AxisCorrection> axis;  // r-z only
+  std::unique_ptr<detail::StrengthModel> strength;  // effect strength only
   double radiusFactor = 0.0;   // list radius / h_ij: kernel support + skin
   bool rz = false;
   bool compatible = false;     // cfg.energy == Compatible

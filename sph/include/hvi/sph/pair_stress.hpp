@@ -2,8 +2,8 @@
 //! pure and header-only like pair_force.hpp, to be added to its terms by a strength pass:
 //! the kernel velocity gradient, the symmetric stress force of Libersky and Petschek (1991) /
 //! Gray, Monaghan and Swift (2001, eqs. 2.3-2.5) with the matching stress power, and
-//! Monaghan's (2000) artificial stress against the tensile instability. Not wired into the
-//! stepper yet (docs/strength.md, Open): the r-z hoop terms are still to be written.
+//! Monaghan's (2000) artificial stress against the tensile instability. Summed by the strength
+//! pass (sph/src/strength_pass.cpp, planar); the r-z hoop terms are still to be written.
 #pragma once
 #include <cmath>
 

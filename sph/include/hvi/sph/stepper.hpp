@@ -2,6 +2,7 @@
 #pragma once
 #include <iosfwd>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "hvi/sph/neighbours.hpp"
 #include "hvi/sph/particles.hpp"
 #include "hvi/sph/viscosity.hpp"
+#include "hvi/strength/strength.hpp"
 
 namespace hvi::sph {
 
@@ -23,6 +25,25 @@ struct StepperConfig {
   cases::Domain domain;  //!< walls / axis are mirrors, outflow sides remove particles
   double time = 0.0;     //!< us, time of the initial state
   std::vector<std::string> objectNames;  //!< for diagnostics
+  //! Effect strength (docs/strength.md, "SPH"): per material its strength (nullopt: a fluid,
+  //! which carries no deviator) and its reference density. Empty: no strength (bit for bit the
+  //! hydrodynamic scheme, nothing allocated).
+  std::vector<std::optional<strength::Material>> strength;
+  std::vector<double> strengthRho0;
+  bool fracture = false;  //!< effect fracture (with strength): spall strength and damage
+  double hFactor = 1.0;   //!< h / dp: W(dp) of the artificial stress
+  //! Monaghan's (2000) artificial stress with strength: epsilon and the exponent n of
+  //! f_ab^n (Gray, Monaghan and Swift 2001: 0.3 and 4); epsilon = 0 switches it off.
+  double artificialStress = 0.3;
+  int artificialStressPower = 4;
+};
+
+//! The strength state of the real particles (empty vectors without the effect).
+struct StrengthFields {
+  std::vector<double> sxx, szz, sxz, stt;  //!< deviatoric stress, Mbar (stt = -(sxx + szz))
+  std::vector<double> plasticStrain;       //!< equivalent plastic strain
+  std::vector<double> damage;              //!< D in [0, 1]
+  std::vector<double> temperature;         //!< K (docs/strength.md, Temperature); 0 for fluids
 };
 
 //! Advances a particle system with the scheme of docs/sph.md:
@@ -54,7 +75,8 @@ class Stepper {
   [[nodiscard]] long stepCount() const;
   [[nodiscard]] std::size_t size() const;  //!< real particles
   [[nodiscard]] std::size_t ghostCount() const;
-  [[nodiscard]] ParticleSystem particles() const;  //!< copy of the real particles' state
+  [[nodiscard]] ParticleSystem particles() const;       //!< copy of the real particles' state
+  [[nodiscard]] StrengthFields strengthFields() const;  //!< empty without strength
   [[nodiscard]] const NeighbourList& neighbours() const;
   [[nodiscard]] const StepperConfig& config() const;
   //! Integrals over the particles in the domain plus what left through outflow sides, so that
