@@ -102,6 +102,9 @@ std::string sceneToml(const ShieldSpec& s) {
     effects = {"tension_cutoff", "material_interfaces", "phase_bookkeeping", "features"};
   const auto strength = detail::strengthEffects(s.solver);
   effects.insert(effects.end(), strength.begin(), strength.end());
+  // Fracture replaces the zero cut-off by each material's spall strength (docs/strength.md).
+  if (std::find(strength.begin(), strength.end(), "fracture") != strength.end())
+    std::erase(effects, std::string("tension_cutoff"));
 
   std::string out;
   out +=

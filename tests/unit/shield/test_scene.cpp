@@ -6,6 +6,7 @@
 
 #include "hvi/cases/load.hpp"
 #include "hvi/common/error.hpp"
+#include "hvi/shield/ble.hpp"
 #include "hvi/shield/shield.hpp"
 
 namespace hvi::shield {
@@ -83,6 +84,35 @@ TEST(ShieldScene, SphSceneAndStandoffScaling) {
   const WhippleBle b = whippleBle(s);
   EXPECT_DOUBLE_EQ(b.standoff, 6.0);
   EXPECT_NEAR(b.rearWallYieldKsi, 50.0, 1e-12);
+}
+
+TEST(ShieldScene, SphPlatesCarryStrengthAndSpall) {
+  // SPH has the effects strength and fracture (docs/strength.md), so its shield scenes name both,
+  // drop the zero cut-off that fracture replaces, and give every material a strength table: the
+  // alloys with a preset take it, 7075-T6 runs elastic-perfectly plastic at its 73 ksi yield.
+  std::string text = "solver = \"sph\"\n" + std::string(kTwoWalls);
+  text.replace(text.find("al2017_t4"), 9, "al7075_t6");
+  const cases::Scene scene = buildScene(parseShield(text, "s.toml"));
+  EXPECT_TRUE(scene.has(cases::Effect::Strength));
+  EXPECT_TRUE(scene.has(cases::Effect::Fracture));
+  EXPECT_FALSE(scene.has(cases::Effect::TensionCutoff));
+  for (const auto& m : scene.materials) {
+    ASSERT_TRUE(m.strength.has_value()) << m.name;
+    EXPECT_NEAR(m.strength->spallStrength, 0.012, 1e-15) << m.name;  // 1.2 GPa in Mbar
+  }
+  auto of = [&](const std::string& name) {
+    return std::find_if(scene.materials.begin(), scene.materials.end(),
+                        [&](const auto& m) { return m.name == name; });
+  };
+  EXPECT_TRUE(std::holds_alternative<strength::SteinbergGuinan>(of("al6061_t6")->strength->yield));
+  EXPECT_TRUE(std::holds_alternative<strength::JohnsonCook>(of("al2024_t3")->strength->yield));
+  const auto* y = std::get_if<strength::ConstantYield>(&of("al7075_t6")->strength->yield);
+  ASSERT_NE(y, nullptr);
+  EXPECT_NEAR(y->y0, 73.0 * kMpaPerKsi * 1e-5, 1e-12);  // MPa -> Mbar
+  // TVD has no strength yet: its shield scenes stay hydrodynamic with the cut-off.
+  const cases::Scene tvd = buildScene(parseShield(std::string(kTwoWalls), "s.toml"));
+  EXPECT_FALSE(tvd.has(cases::Effect::Strength));
+  EXPECT_TRUE(tvd.has(cases::Effect::TensionCutoff));
 }
 
 TEST(ShieldScene, IntermediateWallCountsInTheStandoff) {
