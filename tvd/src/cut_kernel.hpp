@@ -399,10 +399,9 @@ class CutLineSolver {
   }
 
   // As the whole-cell kernel: faces of a live cell the TVD flux leaves unphysical are
-  // recomputed with the Rusanov flux, and what is left of a negative internal energy is
-  // floored (booked). Mass is never removed: a positivity flux limiter keeps every cell's mass
-  // (as judged) from going below zero, and a live cell that still cannot be kept physical
-  // stops the run.
+  // recomputed with the Rusanov flux. Mass is never removed: a positivity flux limiter keeps
+  // every cell's mass (as judged) from going below zero. What is left is check's: the floors of
+  // negative internal energy (booked), and the stop of a live cell that cannot be kept physical.
   void positivity(int p, const std::array<std::vector<double>, 4>& V, const std::vector<double>& S,
                   bool first) {
     PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
