@@ -54,6 +54,7 @@ double TvdSolver::signalSpeedCut(double* vx, double* vz, long* worstCell) const 
   for (int p = 0; p < phases_.count; ++p) {
     const auto& alpha = phases_.alpha[static_cast<std::size_t>(p)];
     const Conserved& q = phases_.q[static_cast<std::size_t>(p)];
+    const double rhoStep = rhoStep_[static_cast<std::size_t>(p)];
     std::visit(
         [&](const auto& eos) {
           const bool found =
@@ -64,6 +65,7 @@ double TvdSolver::signalSpeedCut(double* vx, double* vz, long* worstCell) const 
                 const double r = q.rho[cc] / a;
                 if (r == 0.0) return 0;  // emptied by the positivity limiter; filled by repair
                 if (!(r > 0.0)) return -1;
+                if (r < rhoStep) return 0;  // below the time-step density: not in the CFL
                 s = detail::cellState(eos, r, q.mx[cc] / a, q.mz[cc] / a, q.E[cc] / a);
                 return 1;
               });

@@ -13,6 +13,7 @@
 #include "hvi/tvd/harten_yee.hpp"
 #include "hvi/tvd/limiter.hpp"
 #include "hvi/tvd/phases.hpp"
+#include "hvi/tvd/relaxation.hpp"
 #include "line_kernel.hpp"
 
 namespace hvi::tvd::detail {
@@ -162,7 +163,24 @@ class CutLineSolver {
       const auto& S = first ? ph.vol0 : ph.vol1;
       for (int j = 2; j <= n_ + 1; ++j) update(ph, V, S, j);
       merge(ph);
-      if (!positivity(p, V, S, first, fail)) return false;
+    }
+    // The stiff phases' velocities relax before the positivity treatment judges the stage
+    // (their explicit drag overshoots and takes internal energy into kinetic energy: the
+    // fallback would then act where nothing is wrong), and again after it, before the check and
+    // the floors: the fallback recomputes a phase's cells from the fluxes, and a fading cell
+    // (its mass near zero, so never relaxed) hands its content, with the exchange impulse it
+    // took, to its neighbour.
+    relaxStiff(first, false);
+    for (int p = 0; p < P_; ++p) {
+      PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
+      if (!ph.active) continue;
+      positivity(p, first ? ph.q0 : ph.q1, first ? ph.vol0 : ph.vol1, first);
+    }
+    relaxStiff(first, true);
+    for (int p = 0; p < P_; ++p) {
+      PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
+      if (!ph.active) continue;
+      if (!check(p, first, fail)) return false;
       ledgerFaces(ph);
       if (first) resetThin(p, ph.w, ph.volW, 0.5);
       applyDry(ph);
@@ -276,6 +294,71 @@ class CutLineSolver {
     }
   }
 
+  // Velocity relaxation of stiff phases (docs/tvd.md, "The thin film: velocity relaxation").
+  // A phase of fraction alpha exchanges momentum with the cell's other phases through at most
+  // two interfaces of a cell's width: linearised, p* = p0 + Z (ua - ub) with Z <= Za = rho c,
+  // so its velocity relaxes in tau >= alpha h / (2 c), the time its own sound needs to cross
+  // its part of the cell, and in the same time its own pressure acts on its interface (a film
+  // behind a separating contact is pushed by it alone). The mass that takes the exchange is
+  // the cell's and, through the merge, its paired neighbour's along the line (a sliver of a
+  // full body is not stiff; a film is thin in its neighbours too). An explicit stage with
+  // dt > tau overshoots (Heun amplifies the error for dt > 2 tau; a film: tau ~ 1e-4 dt), so
+  // where tau < dt the cell's phases take their common velocity (the limit tau -> 0, Saurel and
+  // Abgrall 1999), momentum and total energy exact (relaxVelocities). Applied to the state the
+  // stage is judged by: the predictor's result, the corrector's Heun average.
+  void relaxStiff(bool first, bool final) {
+    if (P_ < 2) return;
+    double* m = W_.relax.data();
+    double* mn = m + P_;
+    double* mt = mn + P_;
+    double* E = mt + P_;
+    double* old = E + P_;  // 3 per phase: the judged momenta and energy before
+    const double weight = first ? 1.0 : 2.0;  // the corrector's result changes twice its average
+    for (int j = 2; j <= n_ + 1; ++j) {
+      int held = 0;
+      bool stiff = false;
+      for (int p = 0; p < P_; ++p) {
+        const PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
+        m[p] = 0.0;
+        if (!ph.active || !ph.present[j]) continue;
+        const double r = judged(ph, kRho, j, first);
+        if (!(r > 0.0)) continue;
+        m[p] = r;
+        ++held;
+        const double c = ph.cs[j].c;
+        if (!(c > 0.0)) continue;
+        const double partner = std::max(ph.ap[j - 1] > 0.0 ? ph.alpha[j - 1] : 0.0,
+                                        ph.ap[j] > 0.0 ? ph.alpha[j + 1] : 0.0);
+        if ((ph.alpha[j] + partner) * C_.h < 2.0 * c * C_.dt) stiff = true;
+      }
+      if (!stiff || held < 2) continue;
+      for (int p = 0; p < P_; ++p) {
+        if (!(m[p] > 0.0)) continue;
+        const PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
+        old[3 * p] = mn[p] = judged(ph, kMn, j, first);
+        old[3 * p + 1] = mt[p] = judged(ph, kMt, j, first);
+        old[3 * p + 2] = E[p] = judged(ph, kE, j, first);
+      }
+      relaxVelocities(P_, m, mn, mt, E);
+      // Booked in the exchange as well: the positivity fallback recomputes a phase's cells from
+      // the fluxes and the exchange, and so keeps the impulses the other phases took.
+      const double toExchange = final ? 0.0 : 1.0 / (C_.dt * W_.invVol[j]);
+      for (int p = 0; p < P_; ++p) {
+        if (!(m[p] > 0.0)) continue;
+        PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
+        const double d[3] = {weight * (mn[p] - old[3 * p]), weight * (mt[p] - old[3 * p + 1]),
+                             weight * (E[p] - old[3 * p + 2])};
+        ph.w[kMn][j] += d[0];
+        ph.w[kMt][j] += d[1];
+        ph.w[kE][j] += d[2];
+        ph.ex[kMn][j] += d[0] * toExchange;
+        ph.ex[kMt][j] += d[1] * toExchange;
+        ph.ex[kE][j] += d[2] * toExchange;
+      }
+      if (final) ++B_.relaxed;
+    }
+  }
+
   void update(PhaseLine& ph, const std::array<std::vector<double>, 4>& V,
               const std::vector<double>& S, int j) {
     if (!ph.present[j]) {
@@ -316,12 +399,11 @@ class CutLineSolver {
   }
 
   // As the whole-cell kernel: faces of a live cell the TVD flux leaves unphysical are
-  // recomputed with the Rusanov flux, and what is left of a negative internal energy is
-  // floored (booked). Mass is never removed: a positivity flux limiter keeps every cell's mass
-  // (as judged) from going below zero, and a live cell that still cannot be kept physical
-  // stops the run.
-  bool positivity(int p, const std::array<std::vector<double>, 4>& V, const std::vector<double>& S,
-                  bool first, LineFailure& fail) {
+  // recomputed with the Rusanov flux. Mass is never removed: a positivity flux limiter keeps
+  // every cell's mass (as judged) from going below zero. What is left is check's: the floors of
+  // negative internal energy (booked), and the stop of a live cell that cannot be kept physical.
+  void positivity(int p, const std::array<std::vector<double>, 4>& V, const std::vector<double>& S,
+                  bool first) {
     PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
     auto physicalAt = [&](int j) {
       return physical(judged(ph, kRho, j, first), judged(ph, kMn, j, first),
@@ -392,6 +474,14 @@ class CutLineSolver {
       }
       if (!short_) break;
     }
+  }
+
+  // The stage's result must be physical where the cell is live: a state the fallback and the
+  // limiter could not keep positive stops the run, and what is left of a negative internal
+  // energy is floored (booked).
+  bool check(int p, bool first, LineFailure& fail) {
+    PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
+    mixDeficits(ph, first);
     for (int j = 2; j <= n_ + 1; ++j) {
       if (!ph.present[j] || !live(ph, j, first)) continue;
       const double r = judged(ph, kRho, j, first), m = judged(ph, kMn, j, first);
@@ -411,6 +501,41 @@ class CutLineSolver {
       }
     }
     return true;
+  }
+
+  // A live cell the limiter left without positive mass: its deficit was not made by its own
+  // outflows (the limiter would have scaled them) but handed to it by a fading neighbour
+  // (absorbFading), so no flux is left to scale. As the last resort before the run stops, the
+  // cell mixes with the neighbour along the line that holds the most of the phase (Hu et al.
+  // 2006's mixing: the judged integrals pooled and shared by judged volume, a convex share of
+  // a positive total): conservative, and a no-op wherever the run would have gone on anyway.
+  void mixDeficits(PhaseLine& ph, bool first) {
+    for (int j = 2; j <= n_ + 1; ++j) {
+      if (!ph.present[j] || !live(ph, j, first) || judged(ph, kRho, j, first) > 0.0) continue;
+      const double vj = 1.0 / W_.invVol[j];
+      int t = -1;
+      double best = 0.0;
+      for (int n : {j - 1, j + 1}) {
+        if (n < 2 || n > n_ + 1 || !ph.present[n] || !(judgedVolume(ph, n, first) > 0.0)) continue;
+        const double mass = judged(ph, kRho, n, first) / W_.invVol[n];
+        if (mass > best) {
+          best = mass;
+          t = n;
+        }
+      }
+      if (t < 0) continue;
+      const double vt = 1.0 / W_.invVol[t];
+      if (!(judged(ph, kRho, j, first) * vj + best > 0.0)) continue;
+      const double sj = judgedVolume(ph, j, first) * vj, st = judgedVolume(ph, t, first) * vt;
+      const double weight = first ? 1.0 : 2.0;  // the corrector's result changes twice its average
+      for (int k = 0; k < 4; ++k) {
+        const double aj = judged(ph, k, j, first), at = judged(ph, k, t, first);
+        const double u = (aj * vj + at * vt) / (sj + st);
+        ph.w[k][j] += weight * (u * sj * W_.invVol[j] - aj);
+        ph.w[k][t] += weight * (u * st * W_.invVol[t] - at);
+      }
+      ++B_.mixed;
+    }
   }
 
   // A cell whose part the stage moved out entirely (a trailing edge crossing its face: the

@@ -43,6 +43,7 @@ struct CutLineWork {
   int capacity;
   std::vector<PhaseLine> phase;
   std::vector<double> area, invVol, invR;
+  std::vector<double> relax;  // one cell's phases for the velocity relaxation (7 per phase)
 };
 
 }  // namespace hvi::tvd::detail

@@ -36,6 +36,8 @@ enum Component : int { kRho = 0, kMn = 1, kMt = 2, kE = 3 };
 struct LineBudget {
   Budget interfaces, floors;
   std::array<Budget, 2> edge;  //!< through the low / high domain edge (inflow positive)
+  long relaxed = 0;            //!< cut-cell mode: cell-stages whose phases took one velocity
+  long mixed = 0;              //!< cut-cell mode: deficits mixed with a neighbour (mixDeficits)
 };
 
 //! Buffers for one line of up to `capacity` cells plus two ghost cells at each end. Sized once,

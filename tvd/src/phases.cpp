@@ -34,6 +34,7 @@ CutLineWork::CutLineWork(int cap, int phases) : capacity(cap) {
   area.assign(nb, 1.0);
   invVol.assign(nb, 1.0);
   invR.assign(nb, 0.0);
+  relax.assign(7 * static_cast<std::size_t>(phases), 0.0);
 }
 
 }  // namespace detail

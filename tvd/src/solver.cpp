@@ -134,6 +134,7 @@ void TvdSolver::setUpMaterials(const cases::Scene& scene) {
   for (const auto& m : materials_) {
     rhoCut_.push_back(params_.vacuumDensity * m.rho0());
     rhoThin_.push_back(std::max(kThinFraction * m.rho0(), rhoCut_.back()));
+    rhoStep_.push_back(kStepDensityFraction * m.rho0());
   }
   phaseOn_ = scene.has(cases::Effect::PhaseBookkeeping);
   singleMaterial_ = scene.bodies.front().material;

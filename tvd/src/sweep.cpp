@@ -211,6 +211,8 @@ void TvdSolver::finishSweep(int lines) {
     ledger_.interfaces += rec.interfaces;
     ledger_.floors += rec.floors;
     ledger_.outflow += rec.outflow;
+    relaxations_ += rec.relaxed;
+    mixings_ += rec.mixed;
     for (int e = 0; e < 2; ++e)
       if (rec.edgeMaterial[e] >= 0)
         ownership_.addBoundaryMass(rec.edgeMaterial[e], rec.edgeMass[e]);

@@ -195,6 +195,8 @@ void TvdSolver::sweepCut(int direction, double dt) {
         }
       }
       rec.floors = lb.floors.scaled(lineScale);
+      rec.relaxed = lb.relaxed;
+      rec.mixed = lb.mixed;
       rec.bookEdges(lb, setup, lowSide, highSide, lineScale);
     }
   }

@@ -184,6 +184,43 @@ TEST(TvdCutCells, DiskCarriedTwentyDiameters) {
   EXPECT_EQ(outside, 0.0);
 }
 
+// Why the disk above loses its interior state (docs/tvd.md, "Open (issue 13)"): the repair
+// leaves a mismatch of ~4e-3 of a cell per step between outline cells on opposite sides of the
+// body (the start-of-step apertures miss the swept volume with opposite signs on the front and
+// back halves), so some outline cells are compressed and some rarefied. With the tension
+// cut-off the rarefied ones cannot pull back: the outline is pushed outward, the lines' area
+// grows (+10 % after 20 diameters), and with the mass exact the density falls. Without the
+// cut-off the noise does not rectify. Bounds: area drift 1e-3 (measured 3e-5; 0.1 with the
+// cut-off), interior state 1e-2 (measured 2.7e-3; 0.155 with the cut-off).
+TEST(TvdCutCells, DiskWithoutTensionCutoffKeepsItsArea) {
+  const double h = 0.05, R = 0.25, u = 0.5;
+  cases::Scene s = cutScene(-0.6, 10.8, -0.6, 0.6, h);
+  s.effects.erase(cases::Effect::TensionCutoff);
+  s.materials.push_back(material("aluminium", eos::aluminiumStudy()));
+  s.bodies.push_back(body("disk", 0, cases::Disk{{0.0, 0.013}, R}, {2.79, {u, 0.0}, 0.0}));
+  TvdSolver solver(s);
+  const double a0 = solver.markers().area(0);
+  const double t = 20 * 2 * R / u;
+  runTo(solver, t);
+  const Phases& ph = solver.phases();
+  const Conserved& q = ph.q[0];
+  const auto& a = ph.alpha[0];
+  const int nx = solver.grid().nx;
+  double interior = 0.0;
+  for (std::size_t c = 0; c < q.rho.size(); ++c) {
+    const double x = -0.6 + (static_cast<double>(c % nx) + 0.5) * h - u * t;
+    const double z = -0.6 + (static_cast<double>(c / nx) + 0.5) * h - 0.013;
+    if (std::hypot(x, z) < R - 2 * h && a[c] >= kPhaseAbsent)
+      interior = std::max({interior, std::abs(q.rho[c] / a[c] / 2.79 - 1),
+                           std::abs(q.mx[c] / q.rho[c] - u) / u, std::abs(q.mz[c] / q.rho[c]) / u});
+  }
+  const double drift = solver.markers().area(0) / a0 - 1;
+  std::printf("  no tension cut-off, %ld steps: area drift %.3e, interior state error %.3e\n",
+              solver.step(), drift, interior);
+  EXPECT_LT(std::abs(drift), 1e-3);
+  EXPECT_LT(interior, 1e-2);
+}
+
 // A block with edges along grid lines (offset from them) carried through vacuum along x:
 // its trailing edge leaves cells and its leading edge enters them every few steps, and each
 // phase cell's working fraction moves exactly with the fluxes, so the state stays exact.
@@ -225,10 +262,15 @@ TEST(TvdCutCells, RestartIsBitForBit) {
   a.writeCheckpoint(ck);
   TvdSolver b(s);
   b.readCheckpoint(ck);
+  const long relaxedBefore = a.relaxations();
   for (int n = 0; n < 20; ++n) {
     a.advance(1e9);
     b.advance(1e9);
   }
+  // The steps after the restart include cells whose phases relax to one velocity (docs/tvd.md
+  // "The thin film"): it holds no state across steps, so the restart stays exact.
+  EXPECT_GT(a.relaxations(), relaxedBefore);
+  EXPECT_EQ(b.relaxations(), a.relaxations() - relaxedBefore);
   for (int p = 0; p < 2; ++p) {
     EXPECT_EQ(a.phases().q[p].rho, b.phases().q[p].rho);
     EXPECT_EQ(a.phases().q[p].E, b.phases().q[p].E);

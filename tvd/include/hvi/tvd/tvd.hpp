@@ -82,6 +82,12 @@ class TvdSolver final : public Solver {
   [[nodiscard]] long ownerChanges() const { return ownership_.changes(); }
   //! Cell volume (planar: cm^2 per cm of depth; r-z: 2 pi r dr dz, cm^3).
   [[nodiscard]] double cellVolume(long cell) const { return cellVolumes_(cell); }
+  //! Cut-cell mode: cell-stages whose phases took one velocity (stiff exchange, docs/tvd.md
+  //! "The thin film"), counted since this solver was built (a diagnostic; not checkpointed).
+  [[nodiscard]] long relaxations() const { return relaxations_; }
+  //! Cut-cell mode: deficits the limiter could not reach, mixed with a neighbour (docs/tvd.md
+  //! "The thin film"), counted since this solver was built (a diagnostic; not checkpointed).
+  [[nodiscard]] long deficitMixings() const { return mixings_; }
 
  private:
   struct Workspace;
@@ -129,6 +135,13 @@ class TvdSolver final : public Solver {
   // cannot keep it physical it is reset to vacuum (booked in the ledger) instead of aborting.
   static constexpr double kThinFraction = 1e-3;
   std::vector<double> rhoThin_;
+  // Cut-cell mode: a phase cell below kStepDensityFraction * rho0 does not set the time step
+  // (Autodyn's minimum density factor for the time step, 1e-4): far-expanded vapour whose EOS
+  // sound speed grows without bound (Tillotson, 2e4 cm/us at 1e-5 rho0) would stop the run for
+  // a negligible mass; its state stays bounded by the positivity treatment (docs/tvd.md "The
+  // thin film"). Its mass is still conserved exactly.
+  static constexpr double kStepDensityFraction = 1e-4;
+  std::vector<double> rhoStep_;
   int singleMaterial_ = 0;  // the material of a run without markers
   bool markersOn_ = false;  // effect material_interfaces: marker lines and ownership_
   bool phaseOn_ = false;    // effect phase_bookkeeping: vapour fraction and phase in snapshots
@@ -143,6 +156,8 @@ class TvdSolver final : public Solver {
   bool cut_ = false;     // conservative cut-cell interfaces (markers only)
   Phases phases_;        // cut-cell mode: per material fractions, apertures and states
   std::vector<std::vector<double>> alphaOld_;  // cut-cell mode: fractions before the marker step
+  long relaxations_ = 0;                        // cut-cell mode: relaxed cell-stages (diagnostic)
+  long mixings_ = 0;                            // cut-cell mode: deficits mixed (diagnostic)
   long orphans_ = 0;                            // cut-cell mode: cells kept off the geometry
   // Cut-cell mode: the working fractions equal alpha (the first sweep of a step reads alpha and
   // writes phases_.volume; every occupied cell lies in its line's window, so all are written).
