@@ -85,17 +85,18 @@ Fastest fastestParticle(const std::string& name) {
 }
 
 TEST(ImpactSpeedBound, WeakShockReleaseDoublesTheParticleVelocity) {
-  // The bound's derivation in the acoustic limit: at V = 0.02 cm/us (u* = 0.01, P ~ 0.27 GPa,
-  // strain ~ 0.2 %) Hugoniot and release isentrope agree to second order in the strain, so the
-  // escape speed equals u* to ~ the strain (Zel'dovich and Raizer ch. I); at the variant's
-  // 0.67 cm/us the release adds more than u* (the isentrope lies above the Hugoniot).
+  // The bound's derivation in the acoustic limit: at V = 0.02 cm/us (u* = 0.01 cm/us, strain
+  // eps = u* / c0 = 0.019, P ~ rho0 c0 u* = 1.5 GPa) the release isentrope and the Hugoniot
+  // agree to second order in the strain (the entropy jump is third order; Zel'dovich and Raizer
+  // ch. I), so u_r / u* - 1 = O(eps^2) = 4e-4: allowed 1e-3 (measured 6.4e-5). At the variant's
+  // 0.67 cm/us the release adds more than u* (measured u_r / u* = 1.057).
   const cases::Scene scene = cases::loadScene(std::string(HVI_SOURCE_DIR) +
                                               "/cases/scenes/variant1_sph_coarse.toml");
   const eos::Eos& eos = scene.materials.at(0).eos;
   const double rho0 = eos::referenceDensity(eos);
   const ReleaseBound weak = releaseBound(eos, rho0, 0.0, 0.02);
   EXPECT_NEAR(weak.uStar, 0.01, 1e-12);
-  EXPECT_NEAR(weak.escape / weak.uStar, 1.0, 5e-3);
+  EXPECT_NEAR(weak.escape / weak.uStar, 1.0, 1e-3);
   const ReleaseBound strong = releaseBound(eos, rho0, 0.0, 0.67);
   EXPECT_GT(strong.escape, strong.uStar);
 }
