@@ -15,8 +15,8 @@ namespace {
 
 //! Particles in bin order (structure of arrays) with the bin index over them.
 struct Cloud {
-  std::vector<double> x, z, h, vol, rho;            // vol: area (planar) or meridional area (r-z)
-  std::vector<double> invH2, norm, cut2;            // 1 / h^2, 1 / (pi h^2), (support h)^2
+  std::vector<double> x, z, h, vol, rho;  // vol: area (planar) or meridional area (r-z)
+  std::vector<double> invH2, norm, cut2;  // 1 / h^2, 1 / (pi h^2), (support h)^2
   std::vector<int> mat, obj;
   double bx0 = 0.0, bz0 = 0.0, bin = 1.0;
   int nbx = 1, nbz = 1;
@@ -100,7 +100,8 @@ void adaptToSpacing(Cloud& c, double support, double maxFactor, bool mirror) {
     double d1 = reach * reach, d2 = d1;  // the two smallest squared distances so far
     auto scan = [&](double qx, bool image) {
       const int i0 = std::max(0, static_cast<int>(std::floor((qx - reach - c.bx0) / c.bin)));
-      const int i1 = std::min(c.nbx - 1, static_cast<int>(std::floor((qx + reach - c.bx0) / c.bin)));
+      const int i1 =
+          std::min(c.nbx - 1, static_cast<int>(std::floor((qx + reach - c.bx0) / c.bin)));
       const int k0 = std::max(0, static_cast<int>(std::floor((c.z[q] - reach - c.bz0) / c.bin)));
       const int k1 =
           std::min(c.nbz - 1, static_cast<int>(std::floor((c.z[q] + reach - c.bz0) / c.bin)));
@@ -109,8 +110,11 @@ void adaptToSpacing(Cloud& c, double support, double maxFactor, bool mirror) {
           if (p == q && !image) continue;
           const double ddx = qx - c.x[p], ddz = c.z[q] - c.z[p];
           const double r2 = ddx * ddx + ddz * ddz;
-          if (r2 < d1) d2 = d1, d1 = r2;
-          else if (r2 < d2) d2 = r2;
+          if (r2 < d1) {
+            d2 = d1, d1 = r2;
+          } else if (r2 < d2) {
+            d2 = r2;
+          }
         }
     };
     scan(c.x[q], false);

@@ -24,11 +24,10 @@ namespace {
 //! dx, each particle's v_z seeded uniformly in [-seed, seed] (fixed generator: reproducible).
 double shockedVzRms(const std::string& scene, double dx, double seed,
                     const std::vector<std::string>& extra) {
-  std::vector<std::string> ov = {
-      fmt::format("domain.z=[\"0 cm\", \"{} cm\"]", 8 * dx),
-      fmt::format("bodies[0].z=[\"0 cm\", \"{} cm\"]", 8 * dx),
-      fmt::format("sph.spacing=\"{} cm\"", dx), "solver=sph",
-      "effects=[\"artificial_viscosity\", \"mass_adjustment\"]"};
+  std::vector<std::string> ov = {fmt::format("domain.z=[\"0 cm\", \"{} cm\"]", 8 * dx),
+                                 fmt::format("bodies[0].z=[\"0 cm\", \"{} cm\"]", 8 * dx),
+                                 fmt::format("sph.spacing=\"{} cm\"", dx), "solver=sph",
+                                 "effects=[\"artificial_viscosity\", \"mass_adjustment\"]"};
   ov.insert(ov.end(), extra.begin(), extra.end());
   const cases::Scene s =
       cases::loadScene(std::string(HVI_SOURCE_DIR) + "/cases/scenes/study/" + scene + ".toml", ov);

@@ -77,10 +77,14 @@ Fastest fastestParticle(const std::string& name) {
         f.object = p.object[i];
     }
   }
-  std::printf("  fastest particle %.4f cm/us (body %d at x = %.4f, z = %.3f cm, t = %.3f us, "
-              "step %ld)\n", f.speed, f.object, f.x, f.z, f.t, f.step);
-  std::printf("  fastest along the impact %.4f cm/us (body %d at x = %.4f, z = %.3f cm, t = %.3f "
-              "us)\n", f.forward, f.objectF, f.xF, f.zF, f.tF);
+  std::printf(
+      "  fastest particle %.4f cm/us (body %d at x = %.4f, z = %.3f cm, t = %.3f us, "
+      "step %ld)\n",
+      f.speed, f.object, f.x, f.z, f.t, f.step);
+  std::printf(
+      "  fastest along the impact %.4f cm/us (body %d at x = %.4f, z = %.3f cm, t = %.3f "
+      "us)\n",
+      f.forward, f.objectF, f.xF, f.zF, f.tF);
   return f;
 }
 
@@ -90,8 +94,8 @@ TEST(ImpactSpeedBound, WeakShockReleaseDoublesTheParticleVelocity) {
   // agree to second order in the strain (the entropy jump is third order; Zel'dovich and Raizer
   // ch. I), so u_r / u* - 1 = O(eps^2) = 4e-4: allowed 1e-3 (measured 6.4e-5). At the variant's
   // 0.67 cm/us the release adds more than u* (measured u_r / u* = 1.057).
-  const cases::Scene scene = cases::loadScene(std::string(HVI_SOURCE_DIR) +
-                                              "/cases/scenes/variant1_sph_coarse.toml");
+  const cases::Scene scene =
+      cases::loadScene(std::string(HVI_SOURCE_DIR) + "/cases/scenes/variant1_sph_coarse.toml");
   const eos::Eos& eos = scene.materials.at(0).eos;
   const double rho0 = eos::referenceDensity(eos);
   const ReleaseBound weak = releaseBound(eos, rho0, 0.0, 0.02);
