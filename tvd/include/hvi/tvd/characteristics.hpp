@@ -102,7 +102,8 @@ inline FaceEigen faceEigen(const CellState& L, const CellState& R, const double 
 }
 
 //! out = sum over fields l of r_l * phi[l] (acoustic pair summed first: exact mirror symmetry).
-inline void applyRight(const FaceEigen& f, const double phi[kFields], double out[4]) {
+[[gnu::always_inline]] inline void applyRight(const FaceEigen& f, const double phi[kFields],
+                                             double out[4]) {
   const double sum = phi[0] + phi[3], diff = phi[3] - phi[0];
   out[0] = sum + phi[1];
   out[1] = (f.u * sum + f.c * diff) + f.u * phi[1];
