@@ -8,6 +8,7 @@
 
 #include "hvi/tvd/tvd.hpp"
 #include "cut_line.hpp"
+#include "line_batch.hpp"
 #include "line_work.hpp"
 
 namespace hvi::tvd {
@@ -16,6 +17,8 @@ struct TvdSolver::Workspace {
   explicit Workspace(int lineCells) : line(lineCells) {}
   detail::LineWork line;
   std::unique_ptr<detail::CutLineWork> cut;  // cut-cell mode only
+  std::unique_ptr<detail::BatchWork> batch;  // single material (no markers) only
+  long redone = 0;  // batch lanes redone by LineSolver (positivity fallback)
   bool failed = false;
   int failedLine = 0;  // the lowest failed line this thread saw: the report does not depend on
                        // the schedule
