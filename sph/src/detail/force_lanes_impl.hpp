@@ -1,0 +1,169 @@
+//! @file Body of the lane kernels (force_lanes.hpp), included once per instruction set with
+//! HVI_LANES (the lane count) and HVI_LANES_NS (a namespace of its own) defined. It calls no
+//! inline function of another header: an AVX-512 copy of a shared inline function could
+//! otherwise be the one the linker keeps for the baseline code.
+#include <cstdint>
+
+#include "detail/force_lanes.hpp"
+#include "hvi/sph/kernel.hpp"  // GaussianKernel's constants only
+
+namespace hvi::sph::detail::HVI_LANES_NS {
+namespace {
+
+constexpr int L = HVI_LANES;
+using D = double __attribute__((vector_size(8 * L)));
+using I = std::int64_t __attribute__((vector_size(8 * L)));
+
+inline D splat(double v) { return D{} + v; }
+
+// Element by element: measured faster than the AVX-512 gather instruction on this project's
+// machines (microcoded since the 2023 gather-data-sampling mitigation).
+inline D gather(const double* p, const int* idx) {
+  D v;
+  for (int l = 0; l < L; ++l) v[l] = p[idx[l]];
+  return v;
+}
+
+inline D select(I m, D a, D b) { return m ? a : b; }
+inline void store(double* p, D v) { __builtin_memcpy(p, &v, sizeof v); }
+inline D vabs(D v) { return (D)((I)v & (I{} + INT64_MAX)); }  // clears the sign bit
+
+// kernel.hpp's expNegative lane by lane, same operations: truncation of y >= 0 is floor, done
+// exactly as round-to-nearest through 2^52 minus one where that rounded up.
+inline D expNegative(D x) {
+  constexpr double ln2hi = 6.93147180369123816490e-01;
+  constexpr double ln2lo = 1.90821492927058770002e-10;
+  constexpr double invLn2 = 1.44269504088896338700e+00;
+  constexpr double two52 = 4503599627370496.0;
+  const D y = x * invLn2 + 0.5;
+  D n = (y + two52) - two52;
+  n = select(n > y, n - 1.0, n);
+  const D r = (n * ln2hi - x) + n * ln2lo;
+  const D r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
+  const D a0 = 1.0 + r, a1 = 0.5 + r * (1.0 / 6.0);
+  const D a2 = 1.0 / 24.0 + r * (1.0 / 120.0), a3 = 1.0 / 720.0 + r * (1.0 / 5040.0);
+  const D a4 = 1.0 / 40320.0 + r * (1.0 / 362880.0);
+  const D a5 = 1.0 / 3628800.0 + r * (1.0 / 39916800.0);
+  const D a6 = 1.0 / 479001600.0 + r * (1.0 / 6227020800.0);
+  const D b0 = a0 + a1 * r2, b1 = a2 + a3 * r2, b2 = a4 + a5 * r2;
+  const D d0 = b0 + b1 * r4, d1 = b2 + a6 * r4;
+  const D p = d0 + d1 * r8;
+  // 2^-n: n + 1.5 2^52 holds n in its low bits; (1023 - n) << 52 as a 64-bit difference.
+  const I nbits = (I)(n + 6755399441055744.0);
+  const I scale = (I{} + (std::int64_t{1023} << 52)) - (nbits << 52);
+  return p * (D)scale;
+}
+
+template <bool RZ, bool Viscous, bool Cached, bool Compatible>
+void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, int cnt,
+         double alpha, double beta, const RowTerms& out) {
+  using GK = GaussianKernel;
+  constexpr bool kPairs = Compatible && !Cached;
+  const D xi = splat(a.x[i]), zi = splat(a.z[i]), vxi = splat(a.vx[i]), vzi = splat(a.vz[i]);
+  const D rhoi = splat(a.rho[i]), ci = splat(a.c[i]), hi = splat(a.h[i]), qi = splat(a.q[i]);
+  const D rwi = splat(a.rw[i]);
+  const std::int64_t oi = a.obj[i];
+  I lane;
+  for (int l = 0; l < L; ++l) lane[l] = l;
+  for (int k = 0; k < cnt; k += L) {
+    // The last block's lanes past the row repeat its last neighbour and are masked out.
+    const int* idx = nb + k;
+    int pad[L];
+    if (k + L > cnt) {
+      for (int l = 0; l < L; ++l) pad[l] = nb[k + l < cnt ? k + l : cnt - 1];
+      idx = pad;
+    }
+    const I inRow = lane < (I{} + (cnt - k));
+    const D dx = xi - gather(a.x, idx), dz = zi - gather(a.z, idx);
+    const D r2 = dx * dx + dz * dz;
+    // h_ij = h_i bit for bit when h_j = h_i: the division gives pairTerms' 1 / h_i^2.
+    const D hij = 0.5 * (hi + gather(a.h, idx));
+    const D ih2 = 1.0 / (hij * hij);
+    const D q2 = r2 * ih2;
+    D w;
+    if constexpr (Cached) {
+      if (k + L <= cnt)
+        __builtin_memcpy(&w, wc + k, sizeof w);
+      else
+        for (int l = 0; l < L; ++l) w[l] = wc[k + l < cnt ? k + l : cnt - 1];
+    } else {
+      const D wv = (expNegative(select(q2 < 9.0, q2, splat(9.0))) - GK::tail * (10.0 - q2)) *
+                   GK::norm * ih2;
+      w = select(q2 < GK::support * GK::support, wv, splat(0.0));
+    }
+    const I live = inRow & (w != 0.0);
+    const D f = -2.0 * ih2 * (w + GK::tail * (9.0 - r2 * ih2) * GK::norm * ih2);
+    const D gx = f * dx, gz = f * dz;
+    const D dvx = vxi - gather(a.vx, idx), dvz = vzi - gather(a.vz, idx);
+    const D vdg = dvx * gx + dvz * gz;
+    const D qj = gather(a.q, idx), muj = gather(a.mu, idx);
+    D coef = qi + qj;
+    D halfPi = splat(0.0);
+    D phij = splat(0.0);
+    if constexpr (Viscous) {
+      const D vdotx = dvx * dx + dvz * dz;
+      const D ph = hij * vdotx / (r2 + 0.01 * hij * hij);
+      const D pi = (-alpha * (0.5 * (ci + gather(a.c, idx))) * ph + beta * ph * ph) /
+                   (0.5 * (rhoi + gather(a.rho, idx)));
+      const I approach = vdotx < 0.0;
+      phij = select(approach, ph, splat(0.0));
+      D rpi = select(approach, pi, splat(0.0));
+      if constexpr (RZ) rpi = 0.5 * (rwi + gather(a.rw, idx)) * rpi;
+      coef += rpi;
+      halfPi = 0.5 * rpi;
+    }
+    const D mc = muj * coef;
+    const D ax = -mc * gx, az = -mc * gz;
+    D de;
+    if constexpr (Compatible) {
+      const D ka = qi + halfPi, kb = qj + halfPi;
+      de = muj * ka * vdg;
+      if constexpr (kPairs) {
+        const D s = vabs(ka) + vabs(kb);
+        const I pos = s > 0.0;
+        const D share = select(pos, vabs(ka) / select(pos, s, splat(1.0)), splat(0.5));
+        const D px = select(live, share * ax, splat(0.0));
+        const D pz = select(live, share * az, splat(0.0));
+        for (int l = 0; l < L && k + l < cnt; ++l) {
+          out.pwx[k + l] = px[l];
+          out.pwz[k + l] = pz[l];
+        }
+      }
+    } else {
+      de = 0.5 * mc * vdg;
+    }
+    const D zero = splat(0.0);
+    store(out.ax + k, select(live, ax, zero));
+    store(out.az + k, select(live, az, zero));
+    store(out.de + k, select(live, de, zero));
+    if constexpr (Cached) {
+      I objj;
+      for (int l = 0; l < L; ++l) objj[l] = a.obj[idx[l]];
+      store(out.drho + k, select(live & (objj == oi), muj * vdg, zero));
+    }
+    if constexpr (RZ) store(out.hoop + k, select(live, muj * qj * w, zero));
+    if constexpr (Viscous && Cached) store(out.phi + k, select(live, phij, zero));
+  }
+  (void)rwi;
+}
+
+template <bool RZ, bool Viscous, bool Cached>
+RowKernel pick3(bool compatible) {
+  return compatible ? &row<RZ, Viscous, Cached, true> : &row<RZ, Viscous, Cached, false>;
+}
+template <bool RZ, bool Viscous>
+RowKernel pick2(bool cached, bool compatible) {
+  return cached ? pick3<RZ, Viscous, true>(compatible) : pick3<RZ, Viscous, false>(compatible);
+}
+template <bool RZ>
+RowKernel pick1(bool viscous, bool cached, bool compatible) {
+  return viscous ? pick2<RZ, true>(cached, compatible) : pick2<RZ, false>(cached, compatible);
+}
+
+}  // namespace
+
+RowKernel pick(bool rz, bool viscous, bool cached, bool compatible) {
+  return rz ? pick1<true>(viscous, cached, compatible) : pick1<false>(viscous, cached, compatible);
+}
+
+}  // namespace hvi::sph::detail::HVI_LANES_NS
