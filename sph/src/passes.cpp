@@ -104,14 +104,20 @@ void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list
 // The Gaussian lane kernel for this CPU: AVX-512 where the CPU has it (and the environment
 // variable HVI_SPH_NO_AVX512 is not set, for side-by-side measurements), else baseline.
 // Both give the same bits (force_lanes.hpp).
-RowKernel laneKernel(bool rz, bool viscous, bool cached, bool compatible) {
+bool useAvx512() {
 #if defined(__x86_64__) || defined(__i386__)
   static const bool avx512 = __builtin_cpu_supports("avx512f") &&
                              __builtin_cpu_supports("avx512dq") &&
                              __builtin_cpu_supports("avx512vl") && !std::getenv("HVI_SPH_NO_AVX512");
-  if (avx512)
-    if (RowKernel k = rowKernelAvx512(rz, viscous, cached, compatible)) return k;
+  return avx512;
+#else
+  return false;
 #endif
+}
+
+RowKernel laneKernel(bool rz, bool viscous, bool cached, bool compatible) {
+  if (useAvx512())
+    if (RowKernel k = rowKernelAvx512(rz, viscous, cached, compatible)) return k;
   return rowKernelBaseline(rz, viscous, cached, compatible);
 }
 
@@ -217,6 +223,14 @@ void listPass(const PairArrays& a, std::size_t nReal, double radiusFactor, CellG
 }
 
 }  // namespace
+
+ListRowKernel listRowKernel() {
+  static const ListRowKernel k = [] {
+    ListRowKernel avx = useAvx512() ? listRowKernelAvx512() : nullptr;
+    return avx ? avx : listRowKernelBaseline();
+  }();
+  return k;
+}
 
 ForcePass selectForcePass(cases::Kernel kernel, bool rz, bool viscous, bool compatible,
                           bool cached) {

@@ -33,9 +33,18 @@ struct RowTerms {
 using RowKernel = void (*)(const LaneArrays& a, std::size_t i, const int* nb, const double* wc,
                            int cnt, double alpha, double beta, const RowTerms& out);
 
+//! Gaussian W_ij of one row of the list build: the cnt points at sorted positions slot[k] of the
+//! cell grid (coordinates sx, sz, smoothing length sh) around the point (xi, zi, hi), into w[k]
+//! (capacity cnt rounded up to 8). kernel.hpp's GaussianKernel::value bit for bit.
+using ListRowKernel = void (*)(const double* sx, const double* sz, const double* sh, double xi,
+                               double zi, double hi, const int* slot, int cnt, double* w);
+ListRowKernel listRowKernel();  //!< AVX-512 where the CPU has it, else baseline
+
 //! The kernel for the policy, for baseline x86-64 (2 lanes).
 RowKernel rowKernelBaseline(bool rz, bool viscous, bool cached, bool compatible);
 //! The same compiled for AVX-512 (8 lanes), or null where the CPU (or compiler) lacks it.
 RowKernel rowKernelAvx512(bool rz, bool viscous, bool cached, bool compatible);
+ListRowKernel listRowKernelBaseline();
+ListRowKernel listRowKernelAvx512();  //!< null without compiler support
 
 }  // namespace hvi::sph::detail

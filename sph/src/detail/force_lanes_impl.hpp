@@ -147,6 +147,27 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
   (void)rwi;
 }
 
+void listRow(const double* sx, const double* sz, const double* sh, double xi, double zi,
+             double hi, const int* slot, int cnt, double* w) {
+  using GK = GaussianKernel;
+  for (int k = 0; k < cnt; k += L) {
+    const int* idx = slot + k;
+    int pad[L];
+    if (k + L > cnt) {
+      for (int l = 0; l < L; ++l) pad[l] = slot[k + l < cnt ? k + l : cnt - 1];
+      idx = pad;
+    }
+    const D dx = xi - gather(sx, idx), dz = zi - gather(sz, idx);
+    const D r2 = dx * dx + dz * dz;
+    const D hij = 0.5 * (hi + gather(sh, idx));
+    const D ih2 = 1.0 / (hij * hij);
+    const D q2 = r2 * ih2;
+    const D wv = (expNegative(select(q2 < 9.0, q2, splat(9.0))) - GK::tail * (10.0 - q2)) *
+                 GK::norm * ih2;
+    store(w + k, select(q2 < GK::support * GK::support, wv, splat(0.0)));
+  }
+}
+
 template <bool RZ, bool Viscous, bool Cached>
 RowKernel pick3(bool compatible) {
   return compatible ? &row<RZ, Viscous, Cached, true> : &row<RZ, Viscous, Cached, false>;

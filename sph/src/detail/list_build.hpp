@@ -1,9 +1,12 @@
 //! @file Neighbour-list construction fused with the summation density (corrector).
 #pragma once
 #include <algorithm>
+#include <type_traits>
 #include <cstddef>
 
+#include "detail/force_lanes.hpp"
 #include "detail/parallel.hpp"
+#include "hvi/sph/kernel.hpp"
 #include "hvi/sph/neighbours.hpp"
 
 namespace hvi::sph::detail {
@@ -22,6 +25,7 @@ void buildList(const double* x, const double* z, const double* h, const double* 
   // Cells of half the largest search radius: the 5 x 5 block around a point covers the
   // radius with ~30% fewer candidates than 3 x 3 cells of the full radius.
   constexpr int kReach = 2;
+  constexpr int kLaneRow = 256;  // rows up to this long take the lanes (typical: 30-60)
   grid.build(x, z, h, n, radiusFactor * hmax / kReach);
   const int* order = grid.order();
   const double* sx = grid.sortedX();
@@ -41,47 +45,65 @@ void buildList(const double* x, const double* z, const double* h, const double* 
     int* count = list.count.data();
     int maxCount = 0;
     const long nr = static_cast<long>(nReal);
+    [[maybe_unused]] ListRowKernel rowW = nullptr;
+    if constexpr (std::is_same_v<K, GaussianKernel>) rowW = listRowKernel();
+    const double rf2 = radiusFactor * radiusFactor;
 #pragma omp parallel for schedule(static) if (nr > kParallelPairs) reduction(max : maxCount)
     for (long il = 0; il < nr; ++il) {
       const std::size_t i = static_cast<std::size_t>(il);
       const double xi = x[i], zi = z[i], hi = h[i];
-      const double ih2i = 1.0 / (hi * hi), radi2 = radiusFactor * radiusFactor * hi * hi;
       const int cx = grid.cellX(xi), cz = grid.cellZ(zi);
       const std::size_t base = i * stride;
+      int* slot = index + base;
+      const int last = static_cast<int>(stride) - 1;
+      // Pass 1, without a branch on the distance: every candidate's sorted position is written
+      // at the row's end and kept (the end advances) if it is within radiusFactor * h_ij. So a
+      // row needs one spare slot; once the row is full the last slot is overwritten and the
+      // pairs only counted, and the list is redone wider.
       int cnt = 0;
-      double sum = 0.0;
-      if constexpr (Density) sum = mu[i] * K::value(0.0, hi);
       for (int row = std::max(cz - kReach, 0); row <= std::min(cz + kReach, nz - 1); ++row) {
         const int s0 = grid.begin(row * nx + std::max(cx - kReach, 0));
         const int s1 = grid.begin(row * nx + std::min(cx + kReach, nx - 1) + 1);
         for (int s = s0; s < s1; ++s) {
-          const int j = order[s];
-          if (j == static_cast<int>(i)) continue;
           const double dx = xi - sx[s], dz = zi - sz[s];
           const double r2 = dx * dx + dz * dz;
-          double ih2 = ih2i, rad2 = radi2, hij = hi;
-          if (sh[s] != hi) {  // another object's h: rare, so the division is kept out of the way
-            hij = 0.5 * (hi + sh[s]);
-            ih2 = 1.0 / (hij * hij);
-            rad2 = radiusFactor * radiusFactor * hij * hij;
-          }
-          if (r2 >= rad2) continue;
-          const double w = K::value(r2, hij, ih2);
-          if (cnt < static_cast<int>(stride)) {
-            index[base + static_cast<std::size_t>(cnt)] = j;
-            wc[base + static_cast<std::size_t>(cnt)] = w;
-          }
-          ++cnt;
-          if constexpr (Density) {
-            if (obj[j] == obj[i]) sum += mu[j] * w;
-          }
+          // h_ij = h_i bit for bit when h_j = h_i (then the radius is radiusFactor h_i).
+          const double hij = 0.5 * (hi + sh[s]);
+          slot[std::min(cnt, last)] = s;
+          cnt += static_cast<int>(r2 < rf2 * hij * hij) & static_cast<int>(order[s] != il);
         }
       }
       count[i] = cnt;
       maxCount = std::max(maxCount, cnt);
+      if (cnt > last) continue;  // no spare slot: redone with a wider stride
+      // Pass 2: W_ij of the kept pairs (vector lanes for the Gaussian), then the sorted positions
+      // become point indices and the density adds up in the order the pairs were found.
+      double* wr = wc + base;
+      // The Gaussian's lanes write whole blocks of 8: into a scratch row, not the next row.
+      alignas(64) double tmp[kLaneRow];
+      if (std::is_same_v<K, GaussianKernel> && cnt <= kLaneRow) {
+        rowW(sx, sz, sh, xi, zi, hi, slot, cnt, tmp);
+        std::copy(tmp, tmp + cnt, wr);
+      } else {
+        for (int k = 0; k < cnt; ++k) {
+          const int s = slot[k];
+          const double dx = xi - sx[s], dz = zi - sz[s];
+          const double hij = 0.5 * (hi + sh[s]);
+          wr[k] = K::value(dx * dx + dz * dz, hij, 1.0 / (hij * hij));
+        }
+      }
+      double sum = 0.0;
+      if constexpr (Density) sum = mu[i] * K::value(0.0, hi);
+      for (int k = 0; k < cnt; ++k) {
+        const int j = order[slot[k]];
+        slot[k] = j;
+        if constexpr (Density) {
+          if (obj[j] == obj[i]) sum += mu[j] * wr[k];
+        }
+      }
       if constexpr (Density) rho[i] = sum;
     }
-    if (static_cast<std::size_t>(maxCount) <= stride) return;
+    if (static_cast<std::size_t>(maxCount) < stride) return;
     // Compression (or a ghost-rich corner) filled a row: widen every row and redo. Rare, and
     // the stride never shrinks, so a run allocates only a handful of times.
     list.stride = static_cast<std::size_t>(maxCount) + static_cast<std::size_t>(maxCount) / 4 + 4;
