@@ -11,11 +11,11 @@ namespace hvi::sph::detail {
 RowKernel rowKernelAvx512(bool rz, bool viscous, bool cached, bool compatible) {
   return lanes_avx512::pick(rz, viscous, cached, compatible);
 }
-ListRowKernel listRowKernelAvx512() { return &lanes_avx512::listRow; }
+ScanKernel scanKernelAvx512() { return &lanes_avx512::scan; }
 }  // namespace hvi::sph::detail
 #else
 namespace hvi::sph::detail {
 RowKernel rowKernelAvx512(bool, bool, bool, bool) { return nullptr; }
-ListRowKernel listRowKernelAvx512() { return nullptr; }
+ScanKernel scanKernelAvx512() { return nullptr; }
 }  // namespace hvi::sph::detail
 #endif

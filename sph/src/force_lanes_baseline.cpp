@@ -7,5 +7,5 @@ namespace hvi::sph::detail {
 RowKernel rowKernelBaseline(bool rz, bool viscous, bool cached, bool compatible) {
   return lanes_baseline::pick(rz, viscous, cached, compatible);
 }
-ListRowKernel listRowKernelBaseline() { return &lanes_baseline::listRow; }
+ScanKernel scanKernelBaseline() { return &lanes_baseline::scan; }
 }  // namespace hvi::sph::detail

@@ -224,10 +224,10 @@ void listPass(const PairArrays& a, std::size_t nReal, double radiusFactor, CellG
 
 }  // namespace
 
-ListRowKernel listRowKernel() {
-  static const ListRowKernel k = [] {
-    ListRowKernel avx = useAvx512() ? listRowKernelAvx512() : nullptr;
-    return avx ? avx : listRowKernelBaseline();
+ScanKernel scanKernel() {
+  static const ScanKernel k = [] {
+    ScanKernel avx = useAvx512() ? scanKernelAvx512() : nullptr;
+    return avx ? avx : scanKernelBaseline();
   }();
   return k;
 }

@@ -33,18 +33,21 @@ struct RowTerms {
 using RowKernel = void (*)(const LaneArrays& a, std::size_t i, const int* nb, const double* wc,
                            int cnt, double alpha, double beta, const RowTerms& out);
 
-//! Gaussian W_ij of one row of the list build: the cnt points at sorted positions slot[k] of the
-//! cell grid (coordinates sx, sz, smoothing length sh) around the point (xi, zi, hi), into w[k]
-//! (capacity cnt rounded up to 8). kernel.hpp's GaussianKernel::value bit for bit.
-using ListRowKernel = void (*)(const double* sx, const double* sz, const double* sh, double xi,
-                               double zi, double hi, const int* slot, int cnt, double* w);
-ListRowKernel listRowKernel();  //!< AVX-512 where the CPU has it, else baseline
+//! The list build's scan of the grid's sorted positions [s0, s1) around (xi, zi, hi): each
+//! position s is written at slot[min(cnt, last)] and cnt advances if |x - x_s| < sqrt(rf2) h_is
+//! (h_is = (hi + sh[s]) / 2, compared as rf2 h_is^2) and order[s] != self; with `w` (not null)
+//! its Gaussian W_is goes to w[min(cnt, last)]. Returns cnt. The same slots, values and count as
+//! that loop written one position at a time (the distances in lanes).
+using ScanKernel = int (*)(const double* sx, const double* sz, const double* sh, const int* order,
+                           int s0, int s1, double xi, double zi, double hi, double rf2, int self,
+                           int* slot, double* w, int cnt, int last);
+ScanKernel scanKernel();  //!< AVX-512 where the CPU has it, else baseline
 
 //! The kernel for the policy, for baseline x86-64 (2 lanes).
 RowKernel rowKernelBaseline(bool rz, bool viscous, bool cached, bool compatible);
 //! The same compiled for AVX-512 (8 lanes), or null where the CPU (or compiler) lacks it.
 RowKernel rowKernelAvx512(bool rz, bool viscous, bool cached, bool compatible);
-ListRowKernel listRowKernelBaseline();
-ListRowKernel listRowKernelAvx512();  //!< null without compiler support
+ScanKernel scanKernelBaseline();
+ScanKernel scanKernelAvx512();  //!< null without compiler support
 
 }  // namespace hvi::sph::detail

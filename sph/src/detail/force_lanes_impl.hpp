@@ -3,6 +3,9 @@
 //! inline function of another header: an AVX-512 copy of a shared inline function could
 //! otherwise be the one the linker keeps for the baseline code.
 #include <cstdint>
+#if HVI_LANES == 8 && defined(__AVX512F__)
+#include <immintrin.h>
+#endif
 
 #include "detail/force_lanes.hpp"
 #include "hvi/sph/kernel.hpp"  // GaussianKernel's constants only
@@ -147,25 +150,69 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
   (void)rwi;
 }
 
-void listRow(const double* sx, const double* sz, const double* sh, double xi, double zi,
-             double hi, const int* slot, int cnt, double* w) {
+// The Gaussian W of lanes at squared distance r2 and pair length hij (kernel.hpp's
+// GaussianKernel::value with ih2 = 1 / hij^2: the same bits).
+inline D gaussianW(D r2, D hij) {
   using GK = GaussianKernel;
-  for (int k = 0; k < cnt; k += L) {
-    const int* idx = slot + k;
-    int pad[L];
-    if (k + L > cnt) {
-      for (int l = 0; l < L; ++l) pad[l] = slot[k + l < cnt ? k + l : cnt - 1];
-      idx = pad;
+  const D ih2 = 1.0 / (hij * hij);
+  const D q2 = r2 * ih2;
+  const D wv =
+      (expNegative(select(q2 < 9.0, q2, splat(9.0))) - GK::tail * (10.0 - q2)) * GK::norm * ih2;
+  return select(q2 < GK::support * GK::support, wv, splat(0.0));
+}
+
+int scan(const double* sx, const double* sz, const double* sh, const int* order, int s0, int s1,
+         double xi, double zi, double hi, double rf2, int self, int* slot, double* w, int cnt,
+         int last) {
+  int s = s0;
+  for (; s < s1; s += L) {
+    // The block's lanes past s1 repeat its last position and are never kept.
+    D px, pz, ph;
+    I valid = I{} - 1;
+    if (s + L <= s1) {
+      __builtin_memcpy(&px, sx + s, sizeof px);
+      __builtin_memcpy(&pz, sz + s, sizeof pz);
+      __builtin_memcpy(&ph, sh + s, sizeof ph);
+    } else {
+      for (int l = 0; l < L; ++l) {
+        const int t = s + l < s1 ? s + l : s1 - 1;
+        px[l] = sx[t];
+        pz[l] = sz[t];
+        ph[l] = sh[t];
+        valid[l] = s + l < s1 ? -1 : 0;
+      }
     }
-    const D dx = xi - gather(sx, idx), dz = zi - gather(sz, idx);
+    const D dx = xi - px, dz = zi - pz;
     const D r2 = dx * dx + dz * dz;
-    const D hij = 0.5 * (hi + gather(sh, idx));
-    const D ih2 = 1.0 / (hij * hij);
-    const D q2 = r2 * ih2;
-    const D wv = (expNegative(select(q2 < 9.0, q2, splat(9.0))) - GK::tail * (10.0 - q2)) *
-                 GK::norm * ih2;
-    store(w + k, select(q2 < GK::support * GK::support, wv, splat(0.0)));
+    const D hij = 0.5 * (hi + ph);
+    const I near = (r2 < rf2 * hij * hij) & valid;
+    D wv{};
+    if (w) wv = gaussianW(r2, hij);
+#if HVI_LANES == 8 && defined(__AVX512F__)
+    if (cnt + L <= last + 1 && s + L <= s1) {
+      // The kept positions (and their W) packed to the front of a register, stored at the
+      // row's end: the lanes past them land in the row's spare slots, as the one-at-a-time
+      // loop's rejected positions do.
+      const __m256i ord = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(order + s));
+      const __mmask8 keep = _mm512_cmpneq_epi64_mask((__m512i)near, _mm512_setzero_si512()) &
+                            _mm256_cmpneq_epi32_mask(ord, _mm256_set1_epi32(self));
+      const __m256i pos = _mm256_add_epi32(_mm256_set1_epi32(s),
+                                           _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(slot + cnt),
+                          _mm256_maskz_compress_epi32(keep, pos));
+      if (w) _mm512_storeu_pd(w + cnt, _mm512_maskz_compress_pd(keep, (__m512d)wv));
+      cnt += __builtin_popcount(keep);
+      continue;
+    }
+#endif
+    for (int l = 0; l < L && s + l < s1; ++l) {
+      const int at = cnt < last ? cnt : last;
+      slot[at] = s + l;
+      if (w) w[at] = wv[l];
+      cnt += static_cast<int>(near[l] != 0) & static_cast<int>(order[s + l] != self);
+    }
   }
+  return cnt;
 }
 
 template <bool RZ, bool Viscous, bool Cached>

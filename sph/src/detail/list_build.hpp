@@ -25,7 +25,7 @@ void buildList(const double* x, const double* z, const double* h, const double* 
   // Cells of half the largest search radius: the 5 x 5 block around a point covers the
   // radius with ~30% fewer candidates than 3 x 3 cells of the full radius.
   constexpr int kReach = 2;
-  constexpr int kLaneRow = 256;  // rows up to this long take the lanes (typical: 30-60)
+  constexpr bool kGauss = std::is_same_v<K, GaussianKernel>;
   grid.build(x, z, h, n, radiusFactor * hmax / kReach);
   const int* order = grid.order();
   const double* sx = grid.sortedX();
@@ -33,7 +33,10 @@ void buildList(const double* x, const double* z, const double* h, const double* 
   const double* sh = grid.sortedH();
   const int nx = grid.nx(), nz = grid.nz();
   list.count.resize(nReal);
-  if (list.stride == 0) list.stride = 48;
+  // A new list is sized by a first pass that only counts (every row overflows a stride of
+  // one), so its rows are as long as the lattice needs, not a fixed guess.
+  bool sizing = list.stride == 0;
+  if (sizing) list.stride = 1;
   for (;;) {
     const std::size_t stride = list.stride;
     if (list.index.size() < nReal * stride) {
@@ -45,9 +48,8 @@ void buildList(const double* x, const double* z, const double* h, const double* 
     int* count = list.count.data();
     int maxCount = 0;
     const long nr = static_cast<long>(nReal);
-    [[maybe_unused]] ListRowKernel rowW = nullptr;
-    if constexpr (std::is_same_v<K, GaussianKernel>) rowW = listRowKernel();
     const double rf2 = radiusFactor * radiusFactor;
+    const ScanKernel scan = scanKernel();
 #pragma omp parallel for schedule(static) if (nr > kParallelPairs) reduction(max : maxCount)
     for (long il = 0; il < nr; ++il) {
       const std::size_t i = static_cast<std::size_t>(il);
@@ -55,6 +57,7 @@ void buildList(const double* x, const double* z, const double* h, const double* 
       const int cx = grid.cellX(xi), cz = grid.cellZ(zi);
       const std::size_t base = i * stride;
       int* slot = index + base;
+      double* wr = wc + base;  // the Gaussian's W come with the scan
       const int last = static_cast<int>(stride) - 1;
       // Pass 1, without a branch on the distance: every candidate's sorted position is written
       // at the row's end and kept (the end advances) if it is within radiusFactor * h_ij. So a
@@ -64,27 +67,16 @@ void buildList(const double* x, const double* z, const double* h, const double* 
       for (int row = std::max(cz - kReach, 0); row <= std::min(cz + kReach, nz - 1); ++row) {
         const int s0 = grid.begin(row * nx + std::max(cx - kReach, 0));
         const int s1 = grid.begin(row * nx + std::min(cx + kReach, nx - 1) + 1);
-        for (int s = s0; s < s1; ++s) {
-          const double dx = xi - sx[s], dz = zi - sz[s];
-          const double r2 = dx * dx + dz * dz;
-          // h_ij = h_i bit for bit when h_j = h_i (then the radius is radiusFactor h_i).
-          const double hij = 0.5 * (hi + sh[s]);
-          slot[std::min(cnt, last)] = s;
-          cnt += static_cast<int>(r2 < rf2 * hij * hij) & static_cast<int>(order[s] != il);
-        }
+        // h_ij = h_i bit for bit when h_j = h_i (then the radius is radiusFactor h_i).
+        cnt = scan(sx, sz, sh, order, s0, s1, xi, zi, hi, rf2, static_cast<int>(i), slot,
+                   kGauss ? wr : nullptr, cnt, last);
       }
       count[i] = cnt;
       maxCount = std::max(maxCount, cnt);
       if (cnt > last) continue;  // no spare slot: redone with a wider stride
-      // Pass 2: W_ij of the kept pairs (vector lanes for the Gaussian), then the sorted positions
-      // become point indices and the density adds up in the order the pairs were found.
-      double* wr = wc + base;
-      // The Gaussian's lanes write whole blocks of 8: into a scratch row, not the next row.
-      alignas(64) double tmp[kLaneRow];
-      if (std::is_same_v<K, GaussianKernel> && cnt <= kLaneRow) {
-        rowW(sx, sz, sh, xi, zi, hi, slot, cnt, tmp);
-        std::copy(tmp, tmp + cnt, wr);
-      } else {
+      // Pass 2: W_ij of the kept pairs (the Gaussian's came with the scan), then the sorted
+      // positions become point indices and the density adds up in the order the pairs were found.
+      if constexpr (!kGauss) {
         for (int k = 0; k < cnt; ++k) {
           const int s = slot[k];
           const double dx = xi - sx[s], dz = zi - sz[s];
@@ -106,7 +98,10 @@ void buildList(const double* x, const double* z, const double* h, const double* 
     if (static_cast<std::size_t>(maxCount) < stride) return;
     // Compression (or a ghost-rich corner) filled a row: widen every row and redo. Rare, and
     // the stride never shrinks, so a run allocates only a handful of times.
-    list.stride = static_cast<std::size_t>(maxCount) + static_cast<std::size_t>(maxCount) / 4 + 4;
+    // The first sizing leaves 1/8 spare (the lattice's own count plus the ghosts' corners).
+    const auto mc = static_cast<std::size_t>(maxCount);
+    list.stride = sizing ? mc + mc / 8 + 2 : mc + mc / 4 + 4;
+    sizing = false;
   }
 }
 

@@ -112,18 +112,24 @@ void checkPolicy(RowKernel kernel, const char* name) {
       EXPECT_EQ(t.ax[ks], live ? r.ax : 0.0) << "pair " << i << "," << j;
       EXPECT_EQ(t.az[ks], live ? r.az : 0.0) << "pair " << i << "," << j;
       EXPECT_EQ(t.de[ks], live ? r.de : 0.0) << "pair " << i << "," << j;
-      if (Cached)
+      if (Cached) {
         EXPECT_EQ(t.drho[ks], live && p.obj[i] == p.obj[j] ? r.drho : 0.0);
-      if (RZ) EXPECT_EQ(t.hoop[ks], live ? r.hoop : 0.0);
-      if (Viscous && Cached) EXPECT_EQ(t.phi[ks], live ? r.phi : 0.0);
+      }
+      if (RZ) {
+        EXPECT_EQ(t.hoop[ks], live ? r.hoop : 0.0);
+      }
+      if (Viscous && Cached) {
+        EXPECT_EQ(t.phi[ks], live ? r.phi : 0.0);
+      }
       if (Compatible && !Cached) {
         EXPECT_EQ(t.pwx[ks], live ? r.share * r.ax : 0.0);
         EXPECT_EQ(t.pwz[ks], live ? r.share * r.az : 0.0);
       }
     }
     // The pair data beyond the row is not touched (it is the next row's).
-    if (Compatible && !Cached)
+    if (Compatible && !Cached) {
       for (std::size_t k = nb.size(); k < cap; ++k) EXPECT_EQ(t.pwx[k], -7.0);
+    }
   }
   // The rows above did meet every lane condition.
   EXPECT_GT(rowsWithZeroW, 0);

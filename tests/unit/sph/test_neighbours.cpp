@@ -6,6 +6,7 @@
 #include <random>
 #include <vector>
 
+#include "hvi/sph/kernel.hpp"
 #include "hvi/sph/neighbours.hpp"
 
 namespace hvi::sph {
@@ -38,6 +39,13 @@ TEST(Neighbours, SameSetsAsBruteForceWithMixedSmoothingLengths) {
     }
     std::vector<int> got(list.index.begin() + static_cast<long>(i * list.stride),
                          list.index.begin() + static_cast<long>(i * list.stride) + list.count[i]);
+    // The cached W_ij (the build computes them in vector lanes): kernel.hpp's value bit for bit.
+    for (int k = 0; k < list.count[i]; ++k) {
+      const std::size_t e = i * list.stride + static_cast<std::size_t>(k);
+      const auto j = static_cast<std::size_t>(list.index[e]);
+      const double r2 = (x[i] - x[j]) * (x[i] - x[j]) + (z[i] - z[j]) * (z[i] - z[j]);
+      ASSERT_EQ(list.w[e], GaussianKernel::value(r2, 0.5 * (h[i] + h[j]))) << i << " " << j;
+    }
     std::sort(got.begin(), got.end());
     ASSERT_EQ(got, expect) << "particle " << i;
   }
