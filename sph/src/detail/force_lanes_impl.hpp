@@ -28,6 +28,11 @@ inline D gather(const double* p, const int* idx) {
 }
 
 inline D select(I m, D a, D b) { return m ? a : b; }
+inline bool anyLane(I m) {
+  std::int64_t any = 0;
+  for (int l = 0; l < L; ++l) any |= m[l];
+  return any != 0;
+}
 inline void store(double* p, D v) { __builtin_memcpy(p, &v, sizeof v); }
 inline D vabs(D v) { return (D)((I)v & (I{} + INT64_MAX)); }  // clears the sign bit
 
@@ -65,6 +70,7 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
   const D xi = splat(a.x[i]), zi = splat(a.z[i]), vxi = splat(a.vx[i]), vzi = splat(a.vz[i]);
   const D rhoi = splat(a.rho[i]), ci = splat(a.c[i]), hi = splat(a.h[i]), qi = splat(a.q[i]);
   const D rwi = splat(a.rw[i]);
+  const D ih2i = splat(1.0 / (a.h[i] * a.h[i]));
   const std::int64_t oi = a.obj[i];
   I lane;
   for (int l = 0; l < L; ++l) lane[l] = l;
@@ -80,8 +86,11 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
     const D dx = xi - gather(a.x, idx), dz = zi - gather(a.z, idx);
     const D r2 = dx * dx + dz * dz;
     // h_ij = h_i bit for bit when h_j = h_i: the division gives pairTerms' 1 / h_i^2.
-    const D hij = 0.5 * (hi + gather(a.h, idx));
-    const D ih2 = 1.0 / (hij * hij);
+    const D hj = gather(a.h, idx);
+    const D hij = 0.5 * (hi + hj);
+    // Within an object h is constant, h_ij = h_i bit for bit and 1 / h_ij^2 is i's own: the
+    // division (the costliest lane operation) only for blocks that reach another object's h.
+    const D ih2 = anyLane(hj != hi) ? 1.0 / (hij * hij) : ih2i;
     const D q2 = r2 * ih2;
     D w;
     if constexpr (Cached) {
@@ -105,15 +114,19 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
     D phij = splat(0.0);
     if constexpr (Viscous) {
       const D vdotx = dvx * dx + dvz * dz;
-      const D ph = hij * vdotx / (r2 + 0.01 * hij * hij);
-      const D pi = (-alpha * (0.5 * (ci + gather(a.c, idx))) * ph + beta * ph * ph) /
-                   (0.5 * (rhoi + gather(a.rho, idx)));
       const I approach = vdotx < 0.0;
-      phij = select(approach, ph, splat(0.0));
-      D rpi = select(approach, pi, splat(0.0));
-      if constexpr (RZ) rpi = 0.5 * (rwi + gather(a.rw, idx)) * rpi;
-      coef += rpi;
-      halfPi = 0.5 * rpi;
+      // Pi only acts on approaching pairs: a block without one (a body at rest, expansion)
+      // skips its two divisions; the others compute it in every lane and mask.
+      if (anyLane(approach)) {
+        const D ph = hij * vdotx / (r2 + 0.01 * hij * hij);
+        const D pi = (-alpha * (0.5 * (ci + gather(a.c, idx))) * ph + beta * ph * ph) /
+                     (0.5 * (rhoi + gather(a.rho, idx)));
+        phij = select(approach, ph, splat(0.0));
+        D rpi = select(approach, pi, splat(0.0));
+        if constexpr (RZ) rpi = 0.5 * (rwi + gather(a.rw, idx)) * rpi;
+        coef += rpi;
+        halfPi = 0.5 * rpi;
+      }
     }
     const D mc = muj * coef;
     const D ax = -mc * gx, az = -mc * gz;
