@@ -101,24 +101,13 @@ void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list
   }
 }
 
-// The Gaussian lane kernel for this CPU: AVX-512 where the CPU has it (and the environment
-// variable HVI_SPH_NO_AVX512 is not set, for side-by-side measurements), else baseline.
-// Both give the same bits (force_lanes.hpp).
-bool useAvx512() {
-#if defined(__x86_64__) || defined(__i386__)
-  static const bool avx512 = __builtin_cpu_supports("avx512f") &&
-                             __builtin_cpu_supports("avx512dq") &&
-                             __builtin_cpu_supports("avx512vl") && !std::getenv("HVI_SPH_NO_AVX512");
-  return avx512;
-#else
-  return false;
-#endif
-}
-
+// The Gaussian lane kernel for this CPU (laneWidth); all widths give the same bits
+// (force_lanes.hpp).
 RowKernel laneKernel(bool rz, bool viscous, bool cached, bool compatible) {
-  if (useAvx512())
-    if (RowKernel k = rowKernelAvx512(rz, viscous, cached, compatible)) return k;
-  return rowKernelBaseline(rz, viscous, cached, compatible);
+  RowKernel k = nullptr;
+  if (laneWidth() >= 8) k = rowKernelAvx512(rz, viscous, cached, compatible);
+  if (!k && laneWidth() >= 4) k = rowKernelAvx2(rz, viscous, cached, compatible);
+  return k ? k : rowKernelBaseline(rz, viscous, cached, compatible);
 }
 
 // forcePass for the Gaussian kernel: the row's pair terms come from the lane kernel, then are
@@ -187,12 +176,14 @@ void lanePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
 
 template <class K, bool RZ, bool Viscous, bool Compatible>
 ForcePass pick(bool cached) {
+  // 2 lanes (baseline x86-64: gathers element by element into 128-bit registers) measured no
+  // faster than the scalar loop, so the lanes start at AVX2's 4 (docs/performance.md).
   if constexpr (std::is_same_v<K, GaussianKernel>)
-    return cached ? &lanePass<RZ, Viscous, true, Compatible>
-                  : &lanePass<RZ, Viscous, false, Compatible>;
-  else
-    return cached ? &forcePass<K, RZ, Viscous, true, Compatible>
-                  : &forcePass<K, RZ, Viscous, false, Compatible>;
+    if (laneWidth() >= 4)
+      return cached ? &lanePass<RZ, Viscous, true, Compatible>
+                    : &lanePass<RZ, Viscous, false, Compatible>;
+  return cached ? &forcePass<K, RZ, Viscous, true, Compatible>
+                : &forcePass<K, RZ, Viscous, false, Compatible>;
 }
 
 template <class K, bool RZ, bool Viscous>
@@ -224,10 +215,27 @@ void listPass(const PairArrays& a, std::size_t nReal, double radiusFactor, CellG
 
 }  // namespace
 
+int laneWidth() {
+  static const int width = [] {
+    int w = 2;
+#if defined(__x86_64__) || defined(__i386__)
+    if (__builtin_cpu_supports("avx2") && rowKernelAvx2(false, false, false, false)) w = 4;
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+        __builtin_cpu_supports("avx512vl") && rowKernelAvx512(false, false, false, false))
+      w = 8;
+#endif
+    if (const char* cap = std::getenv("HVI_SPH_LANES")) w = std::min(w, std::max(2, std::atoi(cap)));
+    return w;
+  }();
+  return width;
+}
+
 ScanKernel scanKernel() {
   static const ScanKernel k = [] {
-    ScanKernel avx = useAvx512() ? scanKernelAvx512() : nullptr;
-    return avx ? avx : scanKernelBaseline();
+    ScanKernel s = nullptr;
+    if (laneWidth() >= 8) s = scanKernelAvx512();
+    if (!s && laneWidth() >= 4) s = scanKernelAvx2();
+    return s ? s : scanKernelBaseline();
   }();
   return k;
 }

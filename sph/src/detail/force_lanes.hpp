@@ -6,8 +6,8 @@
 //! order, so the sums are bit for bit those of the one-pair-at-a-time loop (pairTerms in
 //! pair_force.hpp), whatever the lane width: each lane does the same IEEE operations in the
 //! same order (no contraction into FMA), and the exponential's range reduction is exact.
-//! Two builds of the same code: baseline x86-64 (2 lanes) and, chosen at run time when the CPU
-//! has it, AVX-512 (8 lanes, force_lanes_avx512.cpp).
+//! Three builds of the same code: baseline x86-64 (2 lanes) and, chosen at run time when the CPU
+//! has them, AVX2 (4 lanes, force_lanes_avx2.cpp) and AVX-512 (8 lanes, force_lanes_avx512.cpp).
 #pragma once
 #include <cstddef>
 
@@ -47,7 +47,13 @@ ScanKernel scanKernel();  //!< AVX-512 where the CPU has it, else baseline
 RowKernel rowKernelBaseline(bool rz, bool viscous, bool cached, bool compatible);
 //! The same compiled for AVX-512 (8 lanes), or null where the CPU (or compiler) lacks it.
 RowKernel rowKernelAvx512(bool rz, bool viscous, bool cached, bool compatible);
+//! The same compiled for AVX2 (4 lanes), or null without compiler support.
+RowKernel rowKernelAvx2(bool rz, bool viscous, bool cached, bool compatible);
 ScanKernel scanKernelBaseline();
 ScanKernel scanKernelAvx512();  //!< null without compiler support
+ScanKernel scanKernelAvx2();    //!< null without compiler support
+//! The lane width the passes use: the widest the CPU has (8 AVX-512, 4 AVX2, else 2), capped
+//! by the environment variable HVI_SPH_LANES (2, 4 or 8) for side-by-side measurements.
+int laneWidth();
 
 }  // namespace hvi::sph::detail

@@ -11,7 +11,9 @@
 
 #include <cstdint>
 #include <cstring>
+#include <algorithm>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "detail/force_lanes.hpp"
@@ -155,6 +157,20 @@ TEST(ForceLanes, BaselineLanesGivePairTermsBitForBit) {
   checkAll<true, false>(&detail::rowKernelBaseline, "baseline");
 }
 
+TEST(ForceLanes, Avx2LanesGivePairTermsBitForBit) {
+#if defined(__x86_64__) || defined(__i386__)
+  const bool cpu = __builtin_cpu_supports("avx2");
+#else
+  const bool cpu = false;
+#endif
+  if (!cpu || !detail::rowKernelAvx2(false, true, true, true))
+    GTEST_SKIP() << "no AVX2 on this CPU or compiler";
+  checkAll<false, true>(&detail::rowKernelAvx2, "avx2");
+  checkAll<false, false>(&detail::rowKernelAvx2, "avx2");
+  checkAll<true, true>(&detail::rowKernelAvx2, "avx2");
+  checkAll<true, false>(&detail::rowKernelAvx2, "avx2");
+}
+
 TEST(ForceLanes, Avx512LanesGivePairTermsBitForBit) {
 #if defined(__x86_64__) || defined(__i386__)
   const bool cpu = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
@@ -168,6 +184,66 @@ TEST(ForceLanes, Avx512LanesGivePairTermsBitForBit) {
   checkAll<false, false>(&detail::rowKernelAvx512, "avx512");
   checkAll<true, true>(&detail::rowKernelAvx512, "avx512");
   checkAll<true, false>(&detail::rowKernelAvx512, "avx512");
+}
+
+// The list build's scan (force_lanes.hpp, ScanKernel) against its one-position-at-a-time
+// definition: the same kept slots, W values and count, with a row long enough and with a row
+// that overflows (the last slot is overwritten, the count goes on).
+void checkScan(detail::ScanKernel scan, const char* name) {
+  SCOPED_TRACE(name);
+  std::mt19937 gen(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const int n = 203;  // not a multiple of any lane count
+  std::vector<double> sx(n), sz(n), sh(n);
+  std::vector<int> order(n);
+  for (int s = 0; s < n; ++s) {
+    sx[static_cast<std::size_t>(s)] = 0.2 * u(gen);
+    sz[static_cast<std::size_t>(s)] = 0.2 * u(gen);
+    sh[static_cast<std::size_t>(s)] = s % 5 == 0 ? 0.03 : 0.02;
+    order[static_cast<std::size_t>(s)] = (s * 37) % n;  // a permutation
+  }
+  const double xi = 0.1, zi = 0.1, hi = 0.02, rf2 = 3.3 * 3.3;
+  const int self = order[100];
+  for (int room : {n + 8, 17}) {
+    std::vector<int> slot(static_cast<std::size_t>(room), -1), expSlot(slot);
+    std::vector<double> w(static_cast<std::size_t>(room), -1.0), expW(w);
+    const int last = room - 1;
+    int cnt = 0, expCnt = 0;
+    // Three segments, as the build's rows of cells: [0, 50), [50, 51), [51, n).
+    for (auto [s0, s1] : {std::pair{0, 50}, std::pair{50, 51}, std::pair{51, n}}) {
+      cnt = scan(sx.data(), sz.data(), sh.data(), order.data(), s0, s1, xi, zi, hi, rf2, self,
+                 slot.data(), w.data(), cnt, last);
+      for (int s = s0; s < s1; ++s) {
+        const auto su = static_cast<std::size_t>(s);
+        const double dx = xi - sx[su], dz = zi - sz[su];
+        const double r2 = dx * dx + dz * dz;
+        const double hij = 0.5 * (hi + sh[su]);
+        const auto at = static_cast<std::size_t>(std::min(expCnt, last));
+        expSlot[at] = s;
+        expW[at] = GaussianKernel::value(r2, hij);
+        expCnt += r2 < rf2 * hij * hij && order[su] != self;
+      }
+    }
+    ASSERT_EQ(cnt, expCnt) << "room " << room;
+    ASSERT_GT(cnt, 20);  // the rows above hold many kept and many rejected points
+    ASSERT_LT(cnt, n - 20);
+    for (int k = 0; k < std::min(cnt, last); ++k) {
+      const auto ku = static_cast<std::size_t>(k);
+      EXPECT_EQ(slot[ku], expSlot[ku]) << "room " << room << " slot " << k;
+      EXPECT_EQ(w[ku], expW[ku]) << "room " << room << " slot " << k;
+    }
+  }
+}
+
+TEST(ForceLanes, ListScanKeepsThePairsOfTheOneAtATimeLoop) {
+  checkScan(detail::scanKernelBaseline(), "baseline");
+#if defined(__x86_64__) || defined(__i386__)
+  if (__builtin_cpu_supports("avx2") && detail::scanKernelAvx2())
+    checkScan(detail::scanKernelAvx2(), "avx2");
+  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+      __builtin_cpu_supports("avx512vl") && detail::scanKernelAvx512())
+    checkScan(detail::scanKernelAvx512(), "avx512");
+#endif
 }
 
 }  // namespace
