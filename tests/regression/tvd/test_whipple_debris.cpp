@@ -81,10 +81,13 @@ TEST(TvdWhippleDebris, ThinFilmRunsToTheEndTime) {
     }
   });
   EXPECT_DOUBLE_EQ(solver.time(), tEnd);
-  // No collapse: the smallest step stays within a factor 4 of the first one (0.0219 us);
-  // measured 0.0194 us, 767 steps (the collapsed run fell to 6e-11 us).
-  EXPECT_GT(dtMin, 0.25 * 0.0219);
-  EXPECT_LT(solver.step(), 900L);
+  // No collapse. The debris on the wall is chaotic: a round-off change of the face eigenvectors
+  // (1/c^2 computed once, issue 17) took the smallest step from 0.0194 us and 767 steps to
+  // 0.0055 us and 1378 steps, while a collapse falls by orders of magnitude (6e-11 us). So the
+  // bound is two orders below the first step (0.0219 us) and a step budget three times the
+  // smaller count, far from both the healthy spread and a collapse.
+  EXPECT_GT(dtMin, 0.01 * 0.0219);
+  EXPECT_LT(solver.step(), 2500L);
   // Every body's mass to round-off: nothing leaves the domain by 37 us through the outflow ends
   // z = 0 and 13.4 cm (the ledger's outflow is exactly zero, checked), so each phase's mass in
   // the domain is its initial one.
