@@ -21,7 +21,7 @@ constexpr std::array<KeyRow<Scene>, 2> kTime{{
      .docValue = "**required**, time > start", .required = true},
 }};
 
-constexpr std::array<KeyRow<SphParams>, 11> kSph{{
+constexpr std::array<KeyRow<SphParams>, 13> kSph{{
     {.key = "spacing", .kind = K::Quantity, HVI_KEY_FIELD(SphParams, spacing),
      .ok = [](double v) { return v > 0.0; }, .problem = "must be > 0", .allowed = "a length > 0",
      .docValue = "length > 0, particle spacing dx", .docDefault = "`0.01 cm`"},
@@ -67,6 +67,21 @@ constexpr std::array<KeyRow<SphParams>, 11> kSph{{
      .ok = [](double v) { return v >= 1 && v <= 1e6; }, .problem = "must be in [1, 1000000]",
      .allowed = "an integer in [1, 1000000]",
      .docValue = "integer in [1, 1e6] (1e6 passes are hours; docs/sph.md)", .docDefault = "10000"},
+    // Monaghan's (2000) artificial stress, used with the effect `strength` (docs/strength.md):
+    // epsilon 0.3 and exponent 4 are Gray, Monaghan and Swift's (2001); 0 switches it off.
+    // Above 1 it would push harder than the tension it counters. The exponent sets how fast
+    // the pair weight (W(r) / W(dp))^n falls off beyond the spacing.
+    {.key = "artificial_stress_epsilon", .kind = K::Number,
+     HVI_KEY_FIELD(SphParams, artificialStressEpsilon),
+     .ok = [](double v) { return v >= 0.0 && v <= 1.0; }, .problem = "must be in [0, 1]",
+     .allowed = "0 <= artificial_stress_epsilon <= 1",
+     .docValue = "[0, 1], Monaghan's artificial stress with strength (0: off)",
+     .docDefault = "0.3"},
+    {.key = "artificial_stress_exponent", .kind = K::Integer,
+     HVI_KEY_FIELD(SphParams, artificialStressExponent),
+     .ok = [](double v) { return v >= 1 && v <= 12; }, .problem = "must be in [1, 12]",
+     .allowed = "an integer in [1, 12]",
+     .docValue = "integer in [1, 12], n of the pair weight (W(r) / W(dp))^n", .docDefault = "4"},
 }};
 
 constexpr std::array<KeyRow<TvdParams>, 6> kTvd{{

@@ -60,6 +60,8 @@ StepperConfig stepperConfig(const cases::Scene& scene) {
       cfg.strengthRho0.push_back(mat.rho0());
     }
     cfg.hFactor = scene.sph.hFactor;
+    cfg.artificialStress = scene.sph.artificialStressEpsilon;
+    cfg.artificialStressPower = scene.sph.artificialStressExponent;
     cfg.fracture = scene.has(cases::Effect::Fracture);
   }
   return cfg;

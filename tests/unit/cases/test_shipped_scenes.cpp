@@ -110,6 +110,8 @@ void expectSameScene(const Scene& a, const Scene& b) {
   EXPECT_EQ(p.massTolerance, q.massTolerance);
   EXPECT_EQ(p.deleteFraction, q.deleteFraction);
   EXPECT_EQ(p.maxMassIterations, q.maxMassIterations);
+  EXPECT_EQ(p.artificialStressEpsilon, q.artificialStressEpsilon);
+  EXPECT_EQ(p.artificialStressExponent, q.artificialStressExponent);
   EXPECT_EQ(a.tvd.cellSize, b.tvd.cellSize);
   EXPECT_EQ(a.tvd.limiter, b.tvd.limiter);
   EXPECT_EQ(a.tvd.cfl, b.tvd.cfl);

@@ -119,6 +119,10 @@ struct SphParams {
   double massTolerance = 1e-9;     //!< |rho0/rho - 1| bound of the mass iteration
   double deleteFraction = 1e-4;    //!< delete if m_i / max m < this
   int maxMassIterations = 10000;
+  //! Monaghan's (2000) artificial stress with strength (docs/strength.md): R = -epsilon sigma /
+  //! rho^2 of the tensile principal stresses, weighted per pair by (W(r) / W(dp))^exponent.
+  double artificialStressEpsilon = 0.3;
+  int artificialStressExponent = 4;
 };
 
 enum class Limiter { Minmod, VanLeer, Superbee };
