@@ -169,6 +169,11 @@ void TvdSolver::sweep(int direction, double dt) {
 
       detail::LineBudget lb;
       detail::LineFailure fail;
+      if (strength_)  // the density before the sweep: the strength advection's mass fluxes
+        for (int j = 2; j <= n + 1; ++j) {
+          ws.strength->rhoOld[static_cast<std::size_t>(j)] = W.u0[detail::kRho][j];
+          ws.strength->cells[static_cast<std::size_t>(j)] = at(a - 2 + j);
+        }
       if (!fn(W, setup, ctx, lb, fail)) {
         ws.fail(line, detail::failureMessage(step_, xdir, dt, a, line, grid_, fail));
         continue;
@@ -177,6 +182,9 @@ void TvdSolver::sweep(int direction, double dt) {
         const long c = at(a - 2 + j);
         for (int k = 0; k < 4; ++k) arrays[k][c] = W.u0[k][j];
       }
+      if (strength_)
+        detail::advectStrengthLine(*strength_, *ws.strength, W, n, lb.edge[0].mass,
+                                   rhoCut_[static_cast<std::size_t>(singleMaterial_)]);
       rec.interfaces = lb.interfaces.scaled(lineScale);
       rec.floors = lb.floors.scaled(lineScale);
       rec.bookEdges(lb, setup, lowSide, highSide, lineScale);

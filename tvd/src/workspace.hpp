@@ -6,16 +6,18 @@
 #include <utility>
 #include <vector>
 
-#include "hvi/tvd/tvd.hpp"
 #include "cut_line.hpp"
+#include "hvi/tvd/tvd.hpp"
 #include "line_work.hpp"
+#include "strength_step.hpp"
 
 namespace hvi::tvd {
 
 struct TvdSolver::Workspace {
   explicit Workspace(int lineCells) : line(lineCells) {}
   detail::LineWork line;
-  std::unique_ptr<detail::CutLineWork> cut;  // cut-cell mode only
+  std::unique_ptr<detail::CutLineWork> cut;            // cut-cell mode only
+  std::unique_ptr<detail::StrengthLineWork> strength;  // effect strength only
   bool failed = false;
   int failedLine = 0;  // the lowest failed line this thread saw: the report does not depend on
                        // the schedule
