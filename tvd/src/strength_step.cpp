@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "eos_line.hpp"
 #include "hvi/cases/effects.hpp"
@@ -98,6 +100,12 @@ void TvdSolver::setUpStrength(const cases::Scene& scene) {
   strength_ = std::move(st);
   for (auto& w : work_)
     w->strength = std::make_unique<detail::StrengthLineWork>(std::max(grid_.nx, grid_.nz));
+}
+
+std::vector<double>& TvdSolver::strengthStateForTesting(int k) {
+  if (!strength_ || k < 0 || k >= detail::kStrengthFields)
+    throw std::logic_error("tvd: no strength state component " + std::to_string(k));
+  return strength_->rq[static_cast<std::size_t>(k)];
 }
 
 double TvdSolver::strengthShearModulus(double rho, double e, double p) const {

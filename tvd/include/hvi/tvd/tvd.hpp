@@ -79,6 +79,10 @@ class TvdSolver final : public Solver {
   //! Index array: material of each object.
   [[nodiscard]] const std::vector<int>& objectMaterial() const { return objectMaterial_; }
   [[nodiscard]] const Ledger& ledger() const { return ledger_; }
+  //! Effect strength: rho times component k of the strength state per cell (0: s_xx, 1: s_zz,
+  //! 2: s_xz, 3: the equivalent plastic strain), for tests that set up a state the scene cannot
+  //! express. Throws std::logic_error without the effect.
+  std::vector<double>& strengthStateForTesting(int k);
   //! Largest stable step of the current state, us.
   [[nodiscard]] double stableTimeStep() const;
   //! Cells whose owner changed since the start (markers only).
