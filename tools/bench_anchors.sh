@@ -15,12 +15,16 @@
 #
 # Environment: ATHENA_DIR (default /work/anchors/athena; cloned from GitHub if absent, never
 # inside this repository), HVI_BUILD (default build), N (Sod cells per side, default 512),
+# N_HVI (hvi's cells per side, default N: a larger grid compares the L1 errors at equal CPU
+# time), LIMITER (hvi's limiter, default minmod),
 # ATHENA_REF (git commit, default the one issue 17 measured: ed4d1e3).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${HVI_BUILD:-$root/build}
 athena=${ATHENA_DIR:-/work/anchors/athena}
 n=${N:-512}
+nh=${N_HVI:-$n}              # hvi's grid (N_HVI > N: hvi at equal CPU time, for the L1 error)
+limiter=${LIMITER:-minmod}   # hvi's limiter
 what=${1:-all}
 export OMP_NUM_THREADS=1 OMP_WAIT_POLICY=passive
 tmp=$(mktemp -d /tmp/hvi_anchors.XXXXXX)
@@ -40,7 +44,7 @@ sod() {
   echo "Athena++ $(git -C "$athena" log -1 --format=%h), $(grep -m1 '^CXXFLAGS' "$athena/Makefile")"
   # hvi: the 2-D Sod scene (sod_x.toml's states on the unit square, walls all round).
   cat >"$tmp/sod2d.toml" <<TOML
-title = "2-D Sod, $n x $n (issue 17 anchor)"
+title = "2-D Sod, $nh x $nh (issue 17 anchor)"
 geometry = "planar"
 solver = "tvd"
 effects = []
@@ -72,8 +76,8 @@ z = ["0 cm", "1 cm"]
 density = "0.125 g/cm^3"
 pressure = "0.1 Mbar"
 [tvd]
-cell_size = "$(/usr/bin/python3 -c "print(1/$n)") cm"
-limiter = "minmod"
+cell_size = "$(/usr/bin/python3 -c "print(1/$nh)") cm"
+limiter = "$limiter"
 cfl = 0.4
 [output]
 times = ["0.2 us"]
@@ -94,7 +98,8 @@ TOML
   local ath_zc ath_cpu
   ath_zc=$(awk -F= '/zone-cycles\/cpu_second/ {gsub(/ /, "", $2); print $2}' "$tmp/athena.log")
   ath_cpu=$(awk -F= '/cpu time used/ {gsub(/ /, "", $2); print $2}' "$tmp/athena.log")
-  echo "hvi TVD:  $hvi_steps steps, CPU $hvi_cpu s (wall $hvi_wall s), $(printf %.3e "$hvi_ups") cell-updates per CPU second"
+  echo "hvi TVD:  $nh x $nh, $limiter, $hvi_steps steps, CPU $hvi_cpu s (wall $hvi_wall s), $(printf %.3e "$hvi_ups") cell-updates per CPU second"
+  echo "hvi L1 density error at t = 0.2 (mean |rho - rho_exact| over the cells): $(/usr/bin/python3 "$root/tools/sod_l1.py" "$tmp/hvi_sod/checkpoint.bin")"
   echo "Athena++: $(awk -v c=$((n * n)) '/^zone-cycles =/ {print $3 / c " cycles"}' "$tmp/athena.log"), CPU $ath_cpu s, $ath_zc zone-cycles per CPU second"
   [[ -f $tmp/shock-errors.dat ]] && echo "Athena++ L1 errors (Nx1 Nx2 Nx3 cycles RMS rho M1 M2 M3 E): $(tail -1 "$tmp/shock-errors.dat")"
   echo "SOD RATIO hvi / Athena++ = $(ratio "$hvi_ups" "$ath_zc")   (issue 17 target: >= 1.5)"

@@ -135,14 +135,19 @@ def memory(args, tmp):
           "\"mass_adjustment\"]"]),
         ("tvd", TVD["scene"], ['tvd.cell_size="%s cm"' % h for h in ("0.03", "0.015")],
          ["time.end=\"0.02 us\"", "tvd.interfaces=conservative"]),
+        # the bare scheme: one material, no marker lines (the batched sweep)
+        ("tvd", TVD["scene"], ['tvd.cell_size="%s cm"' % h for h in ("0.015", "0.0075")],
+         ["time.end=\"0.02 us\"", "effects=[\"tension_cutoff\"]"]),
     ]
     print("\n%-5s %-28s %10s %12s %10s %12s" % ("", "resolution", "items", "peak RSS MiB",
                                                   "B/item", "marginal B"))
-    for name, scene, sizes, extra in cases:
+    for c, (name, scene, sizes, extra) in enumerate(cases):
+        if name not in args.solver:
+            continue
         got = []
         for k, size in enumerate(sizes):
             s = run(args.hvi, scene, [size] + extra + NO_FILES + ['output.times=["0.02 us"]'],
-                    os.path.join(tmp, "mem_%s_%d" % (name, k)))
+                    os.path.join(tmp, "mem_%d_%d" % (c, k)))
             if "work_items" not in s:
                 print(name, size, s["status"])
                 continue

@@ -32,6 +32,16 @@ void addCompareOptions(CLI::App& cmd, hvi::compare::CompareCliOptions& opt) {
                  "exceeds this");
   cmd.add_option("--min-iou", opt.minIou,
                  "Fail (exit 1) if the smallest object (or material) IoU is below this");
+  cmd.add_option_function<std::string>(
+         "--sph-reconstruction",
+         [&opt](const std::string& v) {
+           opt.sphReconstruction = hvi::compare::parseSphReconstruction(v);
+         },
+         "How SPH particles are read onto the grid: adaptive (a particle stands for its share of "
+         "the space its neighbours leave it, so a sparse spray reads as a cloud) or constant "
+         "(each particle's own h and volume, the study's reading)")
+      ->check(CLI::IsMember({"adaptive", "constant"}))
+      ->default_str("adaptive");
   cmd.add_flag("--quiet,-q", opt.quiet, "Do not print the table");
   cmd.add_flag("--force", opt.force,
                "Compare snapshots of different scenes (bodies, materials or domain differ) whose "

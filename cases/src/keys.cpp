@@ -99,8 +99,8 @@ constexpr std::array<KeyRow<TvdParams>, 6> kTvd{{
 
 // Measured on sod_x at 1e6 cells: 170 MB peak memory, 49 MB of HDF5 + VTK per snapshot, 2 s for
 // three snapshots; 1e8 cells needed ~15 GB of each (issue 11). A 1-D exact profile finer than
-// 1e6 cells resolves nothing that a 2-D solver it is compared with could (the 5e7-cell TVD cap
-// is ~7000 cells a side).
+// 1e6 cells resolves nothing that a 2-D solver it is compared with could (the 1.2e8-cell TVD cap
+// is ~11000 cells a side).
 constexpr std::array<KeyRow<RiemannParams>, 2> kRiemann{{
     {.key = "cells", .kind = K::Integer, HVI_KEY_FIELD(RiemannParams, cells),
      .ok = [](double v) { return v >= 2 && v <= 1e6; }, .problem = "must be in [2, 1e6]",

@@ -43,13 +43,17 @@ void checkAxisymmetric(const TableReader& b, const Body& body, double tol) {
 }
 
 // Memory per work item, peak RSS against items (docs/performance.md, tools/bench_effects.py
-// --memory): ~1.1 KiB per SPH particle (state, step arrays and the Gaussian kernel's ~30-60
-// neighbours per particle), ~250 B per TVD cell (conserved state, predictor copy, fluxes), ~500 B
-// per TVD cell with marker lines (owners, per-body fractions, apertures and states). The caps keep
-// a run near 12 GiB, under the 24 GiB of the machines this project targets, and keep item counts
-// far from integer overflow; a scene beyond them is refused before anything is allocated.
-constexpr double kMaxParticles = 1e7;
-constexpr double kMaxCells = 5e7;
+// --memory): ~1.7 KiB per SPH particle at the start of a run, ~2 KiB once compression widens the
+// neighbour rows (state, step arrays, and per neighbour slot, ~43 of them on variant 2's
+// lattice, 28 B: index, cached W and the compatible energy's pair data), ~100 B per TVD cell
+// (conserved state, 32 B, and a snapshot's fields, 56 B, at an output; the sweep buffers are per
+// line and thread: issue 17, measured 89 B marginal and 94-100 B per cell on 2-4 million cells),
+// ~470 B per TVD cell with marker lines (owners, per-body fractions, apertures and states). The
+// caps keep a run near 12 GiB, under the 24 GiB of the machines this project targets, and keep
+// item counts far from integer overflow; a scene beyond them is refused before anything is
+// allocated.
+constexpr double kMaxParticles = 6e6;
+constexpr double kMaxCells = 1.2e8;
 constexpr double kMaxCellsWithMarkers = 2.5e7;
 
 void checkSize(const TableReader& root, const Scene& scene, const std::string& section,

@@ -194,6 +194,7 @@ int compareImpl(const fs::path& a, const fs::path& b, const CompareCliOptions& o
 
   CompareOptions co;
   co.spacing = opt.spacing.value_or(0.0);
+  co.resample.sphReconstruction = opt.sphReconstruction;
   co.features = configFrom(tomlA, fileA);
   co.featuresB = configFrom(tomlB, fileB);
   if (!co.features) co.features = co.featuresB;
@@ -221,6 +222,7 @@ int compareImpl(const fs::path& a, const fs::path& b, const CompareCliOptions& o
   j["b"]["file"] = fileB.string();
   j["a"]["features_config"] = co.features ? toJson(*co.features) : nlohmann::json(nullptr);
   j["b"]["features_config"] = co.featuresB ? toJson(*co.featuresB) : nlohmann::json(nullptr);
+  j["sph_reconstruction"] = toString(opt.sphReconstruction);
   j["thresholds"] = {{"max_density_l1", opt.maxDensityL1 ? nlohmann::json(*opt.maxDensityL1)
                                                          : nlohmann::json(nullptr)},
                      {"min_iou",

@@ -92,11 +92,12 @@ Features measureFeatures(const Resampled& r, const FeatureConfig& cfg) {
   return f;
 }
 
-Features measureFeatures(const Snapshot& s, const FeatureConfig& cfg, double spacing) {
+Features measureFeatures(const Snapshot& s, const FeatureConfig& cfg, double spacing,
+                         const ResampleOptions& opt) {
   if (s.kind == Snapshot::Kind::Grid && spacing <= 0.0)
-    return measureFeatures(resample(s, s.grid), cfg);
+    return measureFeatures(resample(s, s.grid, opt), cfg);
   const double d = spacing > 0.0 ? spacing : nativeSpacing(s);
-  return measureFeatures(resample(s, coveringGrid(s, d)), cfg);
+  return measureFeatures(resample(s, coveringGrid(s, d), opt), cfg);
 }
 
 namespace {

@@ -75,10 +75,25 @@ Resampled emptyResult(const Snapshot& s, const GridSpec& grid) {
 
 }  // namespace detail
 
+const char* toString(SphReconstruction r) {
+  return r == SphReconstruction::Constant ? "constant" : "adaptive";
+}
+
+SphReconstruction parseSphReconstruction(const std::string& name) {
+  if (name == "constant") return SphReconstruction::Constant;
+  if (name == "adaptive") return SphReconstruction::Adaptive;
+  throw InputError(fmt::format("compare: SPH reconstruction '{}' is not known (allowed: constant, "
+                               "adaptive)",
+                               name));
+}
+
 Resampled resample(const Snapshot& s, const GridSpec& grid, const ResampleOptions& opt) {
   if (!(opt.materialThreshold > 0.0 && opt.materialThreshold <= 1.0))
     throw InputError(fmt::format("compare: material threshold {} must lie in (0, 1]",
                                  opt.materialThreshold));
+  if (!(opt.adaptiveMaxFactor >= 1.0 && opt.adaptiveMaxFactor <= 16.0))
+    throw InputError(fmt::format("compare: adaptive reconstruction factor {} must lie in [1, 16]",
+                                 opt.adaptiveMaxFactor));
   return s.kind == Snapshot::Kind::Particles ? detail::resampleParticles(s, grid, opt)
                                              : detail::resampleGrid(s, grid, opt);
 }

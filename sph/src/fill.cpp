@@ -60,7 +60,7 @@ ParticleSystem fillBodies(const cases::Scene& scene) {
     const long k1 = static_cast<long>(std::ceil((zhi - dom.zmin) / g.az));
     std::size_t filled = 0;
     for (long k = k0; k <= k1; ++k) {
-      // Up to 1e7 particles (the validation cap) with a containment test each: seconds, so a
+      // Up to 6e6 particles (the validation cap) with a containment test each: seconds, so a
       // stop request is honoured once per lattice row.
       throwIfStopRequested("the SPH particle fill");
       const double z = dom.zmin + (static_cast<double>(k) + 0.5) * g.az;

@@ -3,7 +3,11 @@
 #include "detail/parallel.hpp"
 
 #include <algorithm>
+#include <cstdlib>
+#include <type_traits>
+#include <vector>
 
+#include "detail/force_lanes.hpp"
 #include "detail/list_build.hpp"
 #include "hvi/sph/kernel.hpp"
 #include "hvi/sph/pair_force.hpp"
@@ -97,8 +101,87 @@ void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list
   }
 }
 
+// The Gaussian lane kernel for this CPU (laneWidth); all widths give the same bits
+// (force_lanes.hpp).
+RowKernel laneKernel(bool rz, bool viscous, bool cached, bool compatible) {
+  RowKernel k = nullptr;
+  if (laneWidth() >= 8) k = rowKernelAvx512(rz, viscous, cached, compatible);
+  if (!k && laneWidth() >= 4) k = rowKernelAvx2(rz, viscous, cached, compatible);
+  return k ? k : rowKernelBaseline(rz, viscous, cached, compatible);
+}
+
+// forcePass for the Gaussian kernel: the row's pair terms come from the lane kernel, then are
+// added up in list order exactly as forcePass adds them (bit for bit the same rates).
+template <bool RZ, bool Viscous, bool Cached, bool Compatible>
+void lanePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
+              const MonaghanViscosity& visc, const AxisCorrection* axis, const Rates& out) {
+  static const RowKernel kernel = laneKernel(RZ, Viscous, Cached, Compatible);
+  constexpr bool kPairs = Compatible && !Cached;
+  const LaneArrays la{a.x.data(),  a.z.data(), a.vx.data(), a.vz.data(), a.rho.data(),
+                      a.c.data(),  a.h.data(), a.mu.data(), a.rw.data(), a.q.data(),
+                      a.obj.data()};
+  const std::size_t stride = list.stride;
+  const std::size_t cap = (stride + 7) / 8 * 8;  // whole blocks of up to 8 lanes
+  const long nr = static_cast<long>(nReal);
+#pragma omp parallel if (nr > kParallelPairs)
+  {
+    // One scratch row per thread and pass (no allocation per pair).
+    std::vector<double> scratch(6 * cap);
+    RowTerms t{scratch.data(), scratch.data() + cap,     scratch.data() + 2 * cap,
+               scratch.data() + 3 * cap, scratch.data() + 4 * cap, scratch.data() + 5 * cap,
+               nullptr, nullptr};
+#pragma omp for schedule(static)
+    for (long il = 0; il < nr; ++il) {
+      const std::size_t i = static_cast<std::size_t>(il);
+      const int cnt = list.count[i];
+      if constexpr (kPairs) {
+        t.pwx = out.pairWx + i * stride;
+        t.pwz = out.pairWz + i * stride;
+      }
+      kernel(la, i, list.index.data() + i * stride, Cached ? list.w.data() + i * stride : nullptr,
+             cnt, visc.alpha, visc.beta, t);
+      double sax = 0.0, saz = 0.0, sde = 0.0, sdrho = 0.0, shoop = 0.0, phi = 0.0;
+      for (int k = 0; k < cnt; ++k) {
+        sax += t.ax[k];
+        saz += t.az[k];
+        sde += t.de[k];
+        if constexpr (Cached) sdrho += t.drho[k];
+        if constexpr (RZ) shoop += t.hoop[k];
+        if constexpr (Viscous && Cached) phi = std::min(phi, t.phi[k]);
+      }
+      if constexpr (RZ) {
+        // As forcePass (docs/sph-rz.md).
+        const double hi = a.h[i], rwi = a.rw[i];
+        const double wii = GaussianKernel::value(0.0, hi);
+        const double hoop = (shoop + a.mu[i] * a.q[i] * wii) * (*axis)(rwi, hi);
+        const double inv = 1.0 / rwi;
+        const double sgn = a.x[i] >= 0.0 ? 1.0 : -1.0;
+        const double hoopAx = sgn * hoop * inv * inv;
+        out.ax[i] = sax * inv + hoopAx;
+        if constexpr (kPairs) out.hoopAx[i] = hoopAx;
+        out.az[i] = saz * inv;
+        out.de[i] = sde * inv + a.lam[i] * hoop * inv;
+        if constexpr (Cached) out.drho[i] = sdrho;
+      } else {
+        (void)axis;
+        out.ax[i] = sax;
+        out.az[i] = saz;
+        out.de[i] = sde;
+        if constexpr (Cached) out.drho[i] = sdrho;
+      }
+      if constexpr (Cached) out.phi[i] = phi;
+    }
+  }
+}
+
 template <class K, bool RZ, bool Viscous, bool Compatible>
 ForcePass pick(bool cached) {
+  // 2 lanes (baseline x86-64: gathers element by element into 128-bit registers) measured no
+  // faster than the scalar loop, so the lanes start at AVX2's 4 (docs/performance.md).
+  if constexpr (std::is_same_v<K, GaussianKernel>)
+    if (laneWidth() >= 4)
+      return cached ? &lanePass<RZ, Viscous, true, Compatible>
+                    : &lanePass<RZ, Viscous, false, Compatible>;
   return cached ? &forcePass<K, RZ, Viscous, true, Compatible>
                 : &forcePass<K, RZ, Viscous, false, Compatible>;
 }
@@ -131,6 +214,31 @@ void listPass(const PairArrays& a, std::size_t nReal, double radiusFactor, CellG
 }
 
 }  // namespace
+
+int laneWidth() {
+  static const int width = [] {
+    int w = 2;
+#if defined(__x86_64__) || defined(__i386__)
+    if (__builtin_cpu_supports("avx2") && rowKernelAvx2(false, false, false, false)) w = 4;
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+        __builtin_cpu_supports("avx512vl") && rowKernelAvx512(false, false, false, false))
+      w = 8;
+#endif
+    if (const char* cap = std::getenv("HVI_SPH_LANES")) w = std::min(w, std::max(2, std::atoi(cap)));
+    return w;
+  }();
+  return width;
+}
+
+ScanKernel scanKernel() {
+  static const ScanKernel k = [] {
+    ScanKernel s = nullptr;
+    if (laneWidth() >= 8) s = scanKernelAvx512();
+    if (!s && laneWidth() >= 4) s = scanKernelAvx2();
+    return s ? s : scanKernelBaseline();
+  }();
+  return k;
+}
 
 ForcePass selectForcePass(cases::Kernel kernel, bool rz, bool viscous, bool compatible,
                           bool cached) {

@@ -39,6 +39,8 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
     if (cut_)
       work_.back()->cut =
           std::make_unique<detail::CutLineWork>(lineCells, static_cast<int>(materials_.size()));
+    if (!markersOn_ && options_.lineBatches)
+      work_.back()->batch = std::make_unique<detail::BatchWork>(lineCells);
   }
   lineRecords_.resize(static_cast<std::size_t>(lineCells));
   time_ = scene.tStart;

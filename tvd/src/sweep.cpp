@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <variant>
 
 #include "hvi/common/error.hpp"
 #include "hvi/tvd/limiter.hpp"
 #include "hvi/tvd/tvd.hpp"
+#include "line_batch.hpp"
 #include "line_kernel.hpp"
 #include "sweep_common.hpp"
 #include "workspace.hpp"
@@ -77,6 +79,35 @@ LineFn pickLineFunction(cases::Limiter limiter, bool radial, bool markers) {
   return pickFor<Minmod>(radial, markers);
 }
 
+// Batches of single-material lines: the limiter and the EOS type are template parameters,
+// chosen once per sweep (std::visit once per sweep, std::get once per batch).
+using BatchFn = void (*)(detail::BatchWork&, const detail::BatchSetup&, const detail::SweepContext&,
+                         const cases::Material&, detail::LineBudget*, bool*);
+
+template <class Lim, class Eos>
+void runBatch(detail::BatchWork& w, const detail::BatchSetup& s, const detail::SweepContext& c,
+              const cases::Material& m, detail::LineBudget* b, bool* redo) {
+  detail::BatchSolver<Lim, Eos>(w, s, c, std::get<Eos>(m.eos)).run(b, redo);
+}
+
+template <class Eos>
+BatchFn pickBatchFor(cases::Limiter limiter) {
+  switch (limiter) {
+    case cases::Limiter::Minmod:
+      return &runBatch<Minmod, Eos>;
+    case cases::Limiter::VanLeer:
+      return &runBatch<VanLeer, Eos>;
+    case cases::Limiter::Superbee:
+      return &runBatch<Superbee, Eos>;
+  }
+  return &runBatch<Minmod, Eos>;
+}
+
+BatchFn pickBatch(cases::Limiter limiter, const cases::Material& m) {
+  return std::visit(
+      [&](const auto& eos) { return pickBatchFor<std::decay_t<decltype(eos)>>(limiter); }, m.eos);
+}
+
 // Objects of one material are one medium: across their common boundary the flow is computed
 // as inside one object (mass crosses, the configuration array only labels the cells), so an
 // aluminium striker on an aluminium shield loses no mass at the contact. Only a boundary
@@ -116,6 +147,28 @@ void TvdSolver::sweep(int direction, double dt) {
   const int* own = markersOn_ ? ownership_.owner().data() : nullptr;
   const Vec2* normal = markersOn_ ? ownership_.normal().data() : nullptr;
 
+  // Single-material planar and r-z axial lines go kB at a time through the batch kernel;
+  // lines beyond the last whole batch, and every line otherwise, through LineSolver.
+  constexpr int kB = detail::kBatch;
+  // Strength (docs/strength.md, TVD) advects its state per line after LineSolver: its scenes
+  // take the per-line path.
+  const bool batched = options_.lineBatches && !markersOn_ && !radial && N >= 2 && !strength_;
+  const int groups = batched ? lines / kB : 0;
+  const int items = groups + (lines - groups * kB);
+  const cases::Material& material = materials_[static_cast<std::size_t>(singleMaterial_)];
+  const BatchFn batchFn = batched ? pickBatch(params_.limiter, material) : nullptr;
+  detail::BatchSetup bsetup;
+  bsetup.n = N;
+  bsetup.left = lowSide;
+  bsetup.right = highSide;
+  bsetup.invVol = 1.0 / h;
+  bsetup.rhoCut = rhoCut_[static_cast<std::size_t>(singleMaterial_)];
+  detail::LineSetup lineSetup;  // a whole line without markers (lineWindow)
+  lineSetup.n = N;
+  lineSetup.left = lowSide;
+  lineSetup.right = highSide;
+  lineSetup.leftEdge = lineSetup.rightEdge = true;
+
 #pragma omp parallel num_threads(threads_) if (grid_.cells() >= kParallelCells)
   {
 #ifdef _OPENMP
@@ -124,11 +177,12 @@ void TvdSolver::sweep(int direction, double dt) {
     Workspace& ws = *work_[0];
 #endif
     detail::LineWork& W = ws.line;
-#pragma omp for schedule(dynamic, 2)
-    for (int line = 0; line < lines; ++line) {
+    // One line through the scalar kernel (markers, r-z radial lines, a batch's remainder, a
+    // batch lane that needs the positivity fallback).
+    auto scalarLine = [&](int line) {
       LineRecord& rec = lineRecords_[static_cast<std::size_t>(line)];
       rec = LineRecord{};
-      if (ws.failed) continue;
+      if (ws.failed) return;
       const long base = xdir ? static_cast<long>(line) * nx : line;
       auto at = [&](int pos) { return base + pos * step; };
 
@@ -138,7 +192,7 @@ void TvdSolver::sweep(int direction, double dt) {
       if (!detail::lineWindow(N, lowSide, highSide,
                               [&](int pos) { return own == nullptr || own[at(pos)] >= 0; }, a,
                               setup))
-        continue;
+        return;
       const int n = setup.n;
 
       for (int j = 0; j < n + 4; ++j) {
@@ -176,7 +230,7 @@ void TvdSolver::sweep(int direction, double dt) {
         }
       if (!fn(W, setup, ctx, lb, fail)) {
         ws.fail(line, detail::failureMessage(step_, xdir, dt, a, line, grid_, fail));
-        continue;
+        return;
       }
       for (int j = 2; j <= n + 1; ++j) {
         const long c = at(a - 2 + j);
@@ -197,9 +251,73 @@ void TvdSolver::sweep(int direction, double dt) {
           rec.edgeMaterial[e] = W.mat[edgeCell[e]];
         }
       }
+    };
+
+#pragma omp for schedule(dynamic, 2)
+    for (int item = 0; item < items; ++item) {
+      if (item >= groups) {
+        scalarLine(groups * kB + (item - groups));
+        continue;
+      }
+      const int first = item * kB;
+      if (ws.failed) {
+        for (int l = 0; l < kB; ++l) lineRecords_[static_cast<std::size_t>(first + l)] = {};
+        continue;
+      }
+      detail::BatchWork& B = *ws.batch;
+      // Lane l of the batch is line first + l, cell pos at buffer (pos + 2) kB + l. The z lines
+      // of a batch are neighbours in memory: one contiguous run of kB values per cell.
+      if (xdir) {
+        for (int l = 0; l < kB; ++l) {
+          const long base = static_cast<long>(first + l) * nx;
+          for (int k = 0; k < 4; ++k)
+            for (int pos = 0; pos < N; ++pos) B.u0[k][(pos + 2) * kB + l] = arrays[k][base + pos];
+        }
+      } else {
+        for (int k = 0; k < 4; ++k)
+          for (int pos = 0; pos < N; ++pos)
+            for (int l = 0; l < kB; ++l)
+              B.u0[k][(pos + 2) * kB + l] = arrays[k][first + l + pos * step];
+      }
+      detail::LineBudget lb[kB];
+      bool redo[kB];
+      batchFn(B, bsetup, ctx, material, lb, redo);
+      bool anyRedo = false;
+      for (int l = 0; l < kB; ++l) anyRedo = anyRedo || redo[l];
+      if (!xdir && !anyRedo)  // z lines: one contiguous run of kB values per cell
+        for (int k = 0; k < 4; ++k)
+          for (int pos = 0; pos < N; ++pos)
+            for (int l = 0; l < kB; ++l)
+              arrays[k][first + l + pos * step] = B.u0[k][(pos + 2) * kB + l];
+      for (int l = 0; l < kB; ++l) {
+        const int line = first + l;
+        if (redo[l]) {  // the positivity fallback: the whole line again through LineSolver
+          ++ws.redone;
+          scalarLine(line);
+          continue;
+        }
+        const long base = xdir ? static_cast<long>(line) * nx : line;
+        if (xdir || anyRedo)
+          for (int k = 0; k < 4; ++k)
+            for (int pos = 0; pos < N; ++pos)
+              arrays[k][base + pos * step] = B.u0[k][(pos + 2) * kB + l];
+        const double lineScale =
+            rz ? 2.0 * std::numbers::pi * cellX_[static_cast<std::size_t>(line)] * h : h;
+        LineRecord& rec = lineRecords_[static_cast<std::size_t>(line)];
+        rec = LineRecord{};
+        rec.interfaces = lb[l].interfaces.scaled(lineScale);
+        rec.floors = lb[l].floors.scaled(lineScale);
+        rec.bookEdges(lb[l], lineSetup, lowSide, highSide, lineScale);
+      }
     }
   }
   finishSweep(lines);
+}
+
+long TvdSolver::linesRedone() const {
+  long n = 0;
+  for (const auto& w : work_) n += w->redone;
+  return n;
 }
 
 // The lowest failed line's report, if any line failed; else the line records summed into the

@@ -1,9 +1,12 @@
 //! @file Neighbour-list construction fused with the summation density (corrector).
 #pragma once
 #include <algorithm>
+#include <type_traits>
 #include <cstddef>
 
+#include "detail/force_lanes.hpp"
 #include "detail/parallel.hpp"
+#include "hvi/sph/kernel.hpp"
 #include "hvi/sph/neighbours.hpp"
 
 namespace hvi::sph::detail {
@@ -22,6 +25,7 @@ void buildList(const double* x, const double* z, const double* h, const double* 
   // Cells of half the largest search radius: the 5 x 5 block around a point covers the
   // radius with ~30% fewer candidates than 3 x 3 cells of the full radius.
   constexpr int kReach = 2;
+  constexpr bool kGauss = std::is_same_v<K, GaussianKernel>;
   grid.build(x, z, h, n, radiusFactor * hmax / kReach);
   const int* order = grid.order();
   const double* sx = grid.sortedX();
@@ -29,7 +33,10 @@ void buildList(const double* x, const double* z, const double* h, const double* 
   const double* sh = grid.sortedH();
   const int nx = grid.nx(), nz = grid.nz();
   list.count.resize(nReal);
-  if (list.stride == 0) list.stride = 48;
+  // A new list is sized by a first pass that only counts (every row overflows a stride of
+  // one), so its rows are as long as the lattice needs, not a fixed guess.
+  bool sizing = list.stride == 0;
+  if (sizing) list.stride = 1;
   for (;;) {
     const std::size_t stride = list.stride;
     if (list.index.size() < nReal * stride) {
@@ -41,50 +48,99 @@ void buildList(const double* x, const double* z, const double* h, const double* 
     int* count = list.count.data();
     int maxCount = 0;
     const long nr = static_cast<long>(nReal);
+    const double rf2 = radiusFactor * radiusFactor;
+    const ScanKernel scan = scanKernel();
+    // 2 lanes (no AVX2) measured slower than the one-candidate-at-a-time loop with its branch
+    // (docs/performance.md): that loop, then; the same pairs, W and densities.
+    const bool lanes = laneWidth() >= 4;
 #pragma omp parallel for schedule(static) if (nr > kParallelPairs) reduction(max : maxCount)
     for (long il = 0; il < nr; ++il) {
       const std::size_t i = static_cast<std::size_t>(il);
       const double xi = x[i], zi = z[i], hi = h[i];
-      const double ih2i = 1.0 / (hi * hi), radi2 = radiusFactor * radiusFactor * hi * hi;
       const int cx = grid.cellX(xi), cz = grid.cellZ(zi);
       const std::size_t base = i * stride;
+      if (!lanes) {
+        const double ih2i = 1.0 / (hi * hi), radi2 = rf2 * hi * hi;
+        int cnt = 0;
+        double sum = 0.0;
+        if constexpr (Density) sum = mu[i] * K::value(0.0, hi);
+        for (int row = std::max(cz - kReach, 0); row <= std::min(cz + kReach, nz - 1); ++row) {
+          const int s0 = grid.begin(row * nx + std::max(cx - kReach, 0));
+          const int s1 = grid.begin(row * nx + std::min(cx + kReach, nx - 1) + 1);
+          for (int s = s0; s < s1; ++s) {
+            const int j = order[s];
+            if (j == static_cast<int>(i)) continue;
+            const double dx = xi - sx[s], dz = zi - sz[s];
+            const double r2 = dx * dx + dz * dz;
+            double ih2 = ih2i, rad2 = radi2, hij = hi;
+            if (sh[s] != hi) {  // another object's h: rare, the division kept out of the way
+              hij = 0.5 * (hi + sh[s]);
+              ih2 = 1.0 / (hij * hij);
+              rad2 = rf2 * hij * hij;
+            }
+            if (r2 >= rad2) continue;
+            const double w = K::value(r2, hij, ih2);
+            if (cnt < static_cast<int>(stride)) {
+              index[base + static_cast<std::size_t>(cnt)] = j;
+              wc[base + static_cast<std::size_t>(cnt)] = w;
+            }
+            ++cnt;
+            if constexpr (Density) {
+              if (obj[j] == obj[i]) sum += mu[j] * w;
+            }
+          }
+        }
+        count[i] = cnt;
+        maxCount = std::max(maxCount, cnt);
+        if constexpr (Density) rho[i] = sum;
+        continue;
+      }
+      int* slot = index + base;
+      double* wr = wc + base;  // the Gaussian's W come with the scan
+      const int last = static_cast<int>(stride) - 1;
+      // Pass 1, without a branch on the distance: every candidate's sorted position is written
+      // at the row's end and kept (the end advances) if it is within radiusFactor * h_ij. So a
+      // row needs one spare slot; once the row is full the last slot is overwritten and the
+      // pairs only counted, and the list is redone wider.
       int cnt = 0;
-      double sum = 0.0;
-      if constexpr (Density) sum = mu[i] * K::value(0.0, hi);
       for (int row = std::max(cz - kReach, 0); row <= std::min(cz + kReach, nz - 1); ++row) {
         const int s0 = grid.begin(row * nx + std::max(cx - kReach, 0));
         const int s1 = grid.begin(row * nx + std::min(cx + kReach, nx - 1) + 1);
-        for (int s = s0; s < s1; ++s) {
-          const int j = order[s];
-          if (j == static_cast<int>(i)) continue;
-          const double dx = xi - sx[s], dz = zi - sz[s];
-          const double r2 = dx * dx + dz * dz;
-          double ih2 = ih2i, rad2 = radi2, hij = hi;
-          if (sh[s] != hi) {  // another object's h: rare, so the division is kept out of the way
-            hij = 0.5 * (hi + sh[s]);
-            ih2 = 1.0 / (hij * hij);
-            rad2 = radiusFactor * radiusFactor * hij * hij;
-          }
-          if (r2 >= rad2) continue;
-          const double w = K::value(r2, hij, ih2);
-          if (cnt < static_cast<int>(stride)) {
-            index[base + static_cast<std::size_t>(cnt)] = j;
-            wc[base + static_cast<std::size_t>(cnt)] = w;
-          }
-          ++cnt;
-          if constexpr (Density) {
-            if (obj[j] == obj[i]) sum += mu[j] * w;
-          }
-        }
+        // h_ij = h_i bit for bit when h_j = h_i (then the radius is radiusFactor h_i).
+        cnt = scan(sx, sz, sh, order, s0, s1, xi, zi, hi, rf2, static_cast<int>(i), slot,
+                   kGauss ? wr : nullptr, cnt, last);
       }
       count[i] = cnt;
       maxCount = std::max(maxCount, cnt);
+      if (cnt > last) continue;  // no spare slot: redone with a wider stride
+      // Pass 2: W_ij of the kept pairs (the Gaussian's came with the scan), then the sorted
+      // positions become point indices and the density adds up in the order the pairs were found.
+      if constexpr (!kGauss) {
+        for (int k = 0; k < cnt; ++k) {
+          const int s = slot[k];
+          const double dx = xi - sx[s], dz = zi - sz[s];
+          const double hij = 0.5 * (hi + sh[s]);
+          wr[k] = K::value(dx * dx + dz * dz, hij, 1.0 / (hij * hij));
+        }
+      }
+      double sum = 0.0;
+      if constexpr (Density) sum = mu[i] * K::value(0.0, hi);
+      for (int k = 0; k < cnt; ++k) {
+        const int j = order[slot[k]];
+        slot[k] = j;
+        if constexpr (Density) {
+          if (obj[j] == obj[i]) sum += mu[j] * wr[k];
+        }
+      }
       if constexpr (Density) rho[i] = sum;
     }
-    if (static_cast<std::size_t>(maxCount) <= stride) return;
+    if (static_cast<std::size_t>(maxCount) < stride) return;
     // Compression (or a ghost-rich corner) filled a row: widen every row and redo. Rare, and
     // the stride never shrinks, so a run allocates only a handful of times.
-    list.stride = static_cast<std::size_t>(maxCount) + static_cast<std::size_t>(maxCount) / 4 + 4;
+    // The first sizing leaves 1/8 spare (the lattice's own count plus the ghosts' corners).
+    const auto mc = static_cast<std::size_t>(maxCount);
+    list.stride = sizing ? mc + mc / 8 + 2 : mc + mc / 4 + 4;
+    sizing = false;
   }
 }
 

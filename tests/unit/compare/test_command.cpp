@@ -137,6 +137,38 @@ TEST_F(CompareCommand, SphAgainstTvdWithFeaturesFromTheStoredScene) {
   EXPECT_NEAR(j["grid"]["dx"].get<double>(), 0.015, 1e-12);
 }
 
+TEST_F(CompareCommand, SparseSprayAgainstItsCloudUnderBothReadings) {
+  // A spray of fragments (h = 0.01 cm, 3 h apart, each keeping the solid density 2.79) against
+  // the grid of the cloud it stands for (density 2.79 / 9). Adaptive (the default): every
+  // particle stands for its (3 h)^2, so the cloud is read as one body of the cloud's density;
+  // constant (the study's): a fragment's kernel sum peaks at 1/pi < 1/2, so nothing is material.
+  test::Scene2 cloud{test::box(0.0, 0.6, 0.0, 0.6)};
+  cloud.object = [](Vec2) { return 0; };
+  cloud.density = [](Vec2) { return 2.79 / 9.0; };
+  Snapshot sph = test::lattice(cloud, 0.0, 0.6, 0.0, 0.6, 0.03, 1.0 / 3.0);
+  for (double& rho : sph.fields[0].data) rho *= 9.0;
+  io::writeHdf5(root_ / "spray.h5", sph, "");
+  write(root_ / "cloud.h5", cloud, GridSpec{80, 80, -0.1, -0.1, 0.01, 0.01}, 0.0, 0);
+  auto read = [&](const fs::path& out) {
+    std::ifstream js(out / "compare.json");
+    return nlohmann::json::parse(js);
+  };
+  CompareCliOptions o = opts("adaptive");
+  ASSERT_EQ(runCompareCommand(root_ / "spray.h5", root_ / "cloud.h5", o), 0);
+  const nlohmann::json a = read(o.out);
+  EXPECT_EQ(a["sph_reconstruction"], "adaptive");
+  // The cloud's edge: the spray's outer particles sit 1.5 h inside the box and its reading
+  // ends within a spacing of them, so the IoU lies within a 3 h band on a 0.6 cm square.
+  EXPECT_GT(a["objects"]["min_iou"].get<double>(), 1.0 - 4.0 * 0.03 / 0.6);
+  EXPECT_LT(a["density"]["material"]["rel_l1"].get<double>(), 4.0 * 0.03 / 0.6);
+  o = opts("constant");
+  o.sphReconstruction = SphReconstruction::Constant;
+  ASSERT_EQ(runCompareCommand(root_ / "spray.h5", root_ / "cloud.h5", o), 0);
+  const nlohmann::json c = read(o.out);
+  EXPECT_EQ(c["sph_reconstruction"], "constant");
+  EXPECT_EQ(c["materials"]["per_class"][1]["cells_a"].get<long>(), 0);
+}
+
 // An .h5 the run's record does not list (an older run's, a copy) is never read, even when its
 // step number is the largest.
 TEST_F(CompareCommand, RunFolderReadsOnlyTheSnapshotsItsRecordLists) {

@@ -116,7 +116,9 @@ TEST(ResampleParticles, ModifiedSphMassesKeepTheBoundaryWithinOneSpacing) {
     for (long i = 0; i < n; ++i) m[i] *= rho0 / rho[i];
   }
   const GridSpec g{200, 200, -0.1, -0.1, 0.25 * kDx, 0.25 * kDx};
-  const Resampled r = resample(snap, g);
+  ResampleOptions study;
+  study.sphReconstruction = SphReconstruction::Constant;
+  const Resampled r = resample(snap, g, study);
   const auto [lo, hi] = rowExtent(r, 100);
   EXPECT_NEAR(lo, 0.0, kDx);
   EXPECT_NEAR(hi, 0.3, kDx);
@@ -124,6 +126,13 @@ TEST(ResampleParticles, ModifiedSphMassesKeepTheBoundaryWithinOneSpacing) {
   RecordProperty("modified_sph_edge_shift_dx", fmt::format("{:.3f}", (0.3 - hi) / kDx));
   const long centre = 100L * g.nx + 100;  // (0.15, 0.15), the middle of the block
   EXPECT_NEAR(r.density[centre], rho0, 1e-6 * rho0);
+  // The adaptive reading gives each particle at least the area dx^2 its neighbours leave it. The
+  // iterated interior masses make m / rho = dx^2 / (lattice kernel sum), which differs from dx^2
+  // by at most the normalisation error: that bounds the change of density; the surface
+  // particles are heavier (m / rho > dx^2) and keep theirs, so the boundary does not move.
+  const Resampled a = resample(snap, g);
+  EXPECT_NEAR(a.density[centre], rho0, kNormError * rho0);
+  EXPECT_EQ(rowExtent(a, 100), rowExtent(r, 100));
 }
 
 TEST(ResampleParticles, MaterialIdFromLargestContribution) {
@@ -181,6 +190,138 @@ TEST(ResampleParticles, AxisymmetricMirrorAndMassConventions) {
       EXPECT_NEAR(hi, 0.3, kDx);
     }
   }
+}
+
+// --- The adaptive reading (docs/compare.md, "Sparse particles") --------------------------------
+
+//! Share of the cells whose centre lies at least `margin` inside [x0, x1] x [z0, z1] that are
+//! vacuum, and the largest |density - rho| and |fraction - 1| over the material ones.
+struct Interior {
+  double vacuumShare = 0.0, maxRhoErr = 0.0, maxFracErr = 0.0;
+};
+Interior interior(const Resampled& r, double x0, double x1, double z0, double z1, double margin,
+                  double rho) {
+  Interior out;
+  long cells = 0, vacuum = 0;
+  for (int k = 0; k < r.grid.nz; ++k)
+    for (int i = 0; i < r.grid.nx; ++i) {
+      const double x = r.xCentre(i), z = r.zCentre(k);
+      if (x < x0 + margin || x > x1 - margin || z < z0 + margin || z > z1 - margin) continue;
+      const long c = static_cast<long>(k) * r.grid.nx + i;
+      ++cells;
+      if (r.material[c] < 0) {
+        ++vacuum;
+        continue;
+      }
+      out.maxRhoErr = std::max(out.maxRhoErr, std::abs(r.density[c] - rho));
+      out.maxFracErr = std::max(out.maxFracErr, std::abs(r.fraction[c] - 1.0));
+    }
+  out.vacuumShare = cells ? static_cast<double>(vacuum) / cells : 1.0;
+  return out;
+}
+
+//! A spray: particles with h = kDx on a square lattice of spacing 3 h, standing for a cloud of
+//! density rhoCloud. `fragments`: each particle keeps a solid density 9 rhoCloud (volume h^2, a
+//! droplet, as an SPH particle that left its neighbours' kernels keeps the density it had);
+//! else its density is the cloud's (volume (3h)^2).
+Snapshot spray(double rhoCloud, bool fragments, Geometry geom, double x0, double x1, double z0,
+               double z1) {
+  const double spacing = 3.0 * kDx;
+  Scene2 sc{box(x0, x1, z0, z1)};
+  sc.density = [&](Vec2) { return rhoCloud; };
+  Snapshot snap = lattice(sc, x0, x1, z0, z1, spacing, kDx / spacing, geom);
+  if (fragments)
+    for (double& rho : snap.fields[0].data) rho *= 9.0;  // same mass, a ninth of the volume
+  return snap;
+}
+
+TEST(ResampleParticles, AdaptiveReadingFillsASparseSprayThatTheConstantReadingLeavesEmpty) {
+  // Expected, for a spray of spacing 3h (Gaussian cut at 3h):
+  // - constant reading, cloud density: at the centre of each square of four particles (2.12 h
+  //   from each) the fraction is 4 (9 / pi) exp(-4.5) = 0.13 < 1/2: a hole; next to a particle
+  //   it is 9 / pi > 1/2. The cloud reads as material blobs with holes between them;
+  // - constant reading, fragments (volume h^2): the fraction peaks at ~1/pi < 1/2: all vacuum;
+  // - adaptive: each particle's second neighbour is at s = 3h, so it is read with length 3h and
+  //   volume (3h)^2, density rhoCloud: a lattice read at h = spacing, whose fraction is 1 to the
+  //   normalisation error kNormError and whose Shepard density of a uniform field is exact.
+  const double rhoCloud = 2.79 / 9.0, spacing = 3.0 * kDx;
+  // Ring masses named: RzMass::Auto tells them from per-radian ones by the kernel sum inside a
+  // body, which a spray of fragments does not have.
+  ResampleOptions adaptive, study;
+  adaptive.rzMass = study.rzMass = RzMass::Ring;
+  study.sphReconstruction = SphReconstruction::Constant;
+  for (const Geometry geom : {Geometry::Planar, Geometry::Axisymmetric})
+    for (const bool fragments : {false, true}) {
+      SCOPED_TRACE(fmt::format("{} {}", geom == Geometry::Planar ? "planar" : "r-z",
+                               fragments ? "fragments" : "cloud density"));
+      const double x0 = 0.0, x1 = 0.6, z0 = 0.0, z1 = 0.6;
+      const Snapshot snap = spray(rhoCloud, fragments, geom, x0, x1, z0, z1);
+      const GridSpec g = coveringGrid(snap, kDx / 3.0);
+      // In r-z the axis is inside the cloud (the mirror images continue it): no margin there.
+      const double margin = 3.0 * spacing;
+      const double xl = geom == Geometry::Planar ? x0 : x0 - margin;
+      const Resampled ra = resample(snap, g, adaptive), rc = resample(snap, g, study);
+      const Interior a = interior(ra, xl, x1, z0, z1, margin, rhoCloud);
+      EXPECT_EQ(a.vacuumShare, 0.0);
+      EXPECT_LT(a.maxRhoErr, 1e-12);
+      EXPECT_LT(a.maxFracErr, kNormError);
+      const Interior c = interior(rc, xl, x1, z0, z1, margin, rhoCloud);
+      if (fragments) {
+        EXPECT_EQ(c.vacuumShare, 1.0);
+      }
+      // The holes: the cell holding each square's centre.
+      int holes = 0, squares = 0;
+      for (double x = x0 + spacing; x < x1 - margin; x += spacing)
+        for (double z = z0 + margin; z < z1 - margin; z += spacing) {
+          if (geom == Geometry::Planar && x < x0 + margin) continue;
+          const int i = static_cast<int>((x - g.x0) / g.dx), k = static_cast<int>((z - g.z0) / g.dz);
+          const long cell = static_cast<long>(k) * g.nx + i;
+          ++squares;
+          holes += rc.material[cell] < 0;
+          EXPECT_EQ(ra.material[cell], 0);
+        }
+      EXPECT_GT(squares, 50);
+      EXPECT_EQ(holes, squares);
+      RecordProperty(fmt::format("constant_vacuum_share_{}_{}", geom == Geometry::Planar ? 0 : 1,
+                                 fragments ? 1 : 0),
+                     fmt::format("{:.3f}", c.vacuumShare));
+    }
+}
+
+TEST(ResampleParticles, AdaptiveReadingLeavesALatticeAsTheConstantOne) {
+  // A body's lattice at rest or compressed 2x along z (masses keep rho consistent with the
+  // area per particle), h = dx and 1.5 dx: the second neighbour is at the smaller spacing,
+  // which is <= h and <= sqrt(m / rho), so the adaptive reading changes nothing but the
+  // round-off of the lattice positions in s (the two readings agree to 1e-12).
+  ResampleOptions study;
+  study.sphReconstruction = SphReconstruction::Constant;
+  for (const double stretch : {1.0, 0.5})
+    for (const double hFactor : {1.0, 1.5})
+    for (const Geometry geom : {Geometry::Planar, Geometry::Axisymmetric}) {
+      SCOPED_TRACE(fmt::format("stretch {} h {} dx {}", stretch, hFactor,
+                               geom == Geometry::Planar ? "planar" : "r-z"));
+      Scene2 sc{box(0.0, 0.3, 0.0, 0.2)};
+      sc.density = [&](Vec2 p) { return (2.79 + 1.4 * p.x) / stretch; };
+      Snapshot snap = lattice(sc, 0.0, 0.3, 0.0, 0.2, kDx, hFactor, geom);
+      for (Vec2& p : snap.positions) p.z *= stretch;
+      const GridSpec g = coveringGrid(snap, 0.7 * kDx);
+      const Resampled a = resample(snap, g), c = resample(snap, g, study);
+      ASSERT_EQ(a.material, c.material);
+      for (std::size_t i = 0; i < a.density.size(); ++i) {
+        ASSERT_NEAR(a.density[i], c.density[i], 1e-12 * 4.0);
+        ASSERT_NEAR(a.fraction[i], c.fraction[i], 1e-12);
+      }
+    }
+}
+
+TEST(ResampleParticles, AdaptiveReadingOptionsAreChecked) {
+  EXPECT_EQ(parseSphReconstruction("constant"), SphReconstruction::Constant);
+  EXPECT_EQ(parseSphReconstruction("adaptive"), SphReconstruction::Adaptive);
+  EXPECT_THROW(parseSphReconstruction("knn"), InputError);
+  const Snapshot snap = lattice(Scene2{box(0.0, 0.1, 0.0, 0.1)}, 0.0, 0.1, 0.0, 0.1, kDx);
+  ResampleOptions o;
+  o.adaptiveMaxFactor = 0.5;
+  EXPECT_THROW(resample(snap, coveringGrid(snap, kDx), o), InputError);
 }
 
 TEST(ResampleParticles, NativeSpacingAndMissingFields) {

@@ -2,9 +2,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 
+#include "hvi/sph/kernel.hpp"
 #include "hvi/sph/neighbours.hpp"
 
 namespace hvi::sph {
@@ -37,9 +39,47 @@ TEST(Neighbours, SameSetsAsBruteForceWithMixedSmoothingLengths) {
     }
     std::vector<int> got(list.index.begin() + static_cast<long>(i * list.stride),
                          list.index.begin() + static_cast<long>(i * list.stride) + list.count[i]);
+    // The cached W_ij (the build computes them in vector lanes): kernel.hpp's value bit for bit.
+    for (int k = 0; k < list.count[i]; ++k) {
+      const std::size_t e = i * list.stride + static_cast<std::size_t>(k);
+      const auto j = static_cast<std::size_t>(list.index[e]);
+      const double r2 = (x[i] - x[j]) * (x[i] - x[j]) + (z[i] - z[j]) * (z[i] - z[j]);
+      ASSERT_EQ(list.w[e], GaussianKernel::value(r2, 0.5 * (h[i] + h[j]))) << i << " " << j;
+    }
     std::sort(got.begin(), got.end());
     ASSERT_EQ(got, expect) << "particle " << i;
   }
+}
+
+TEST(Neighbours, ARowExactlyAsLongAsTheStrideKeepsItsLastNeighbour) {
+  // The builder writes each candidate at the row's end before knowing whether it is kept, so a
+  // row needs one slot more than its neighbours: with the stride set to the exact count, the
+  // rejected candidates after the last kept one must not overwrite it. 7 x 7 points at spacing
+  // 0.01 cm, h = 0.01 cm, radius 1.5 h: the centre sees its 8 nearest neighbours (distance 0.01
+  // and 0.0141 < 0.015); its search block (cells of 0.0075 cm, two either side) also holds the
+  // row z + 0.02 and the column x + 0.02, rejected and scanned after the last kept pair.
+  std::vector<double> x, z, h;
+  for (int i = 0; i < 7; ++i)
+    for (int k = 0; k < 7; ++k) {
+      x.push_back(i * 0.01);
+      z.push_back(k * 0.01);
+      h.push_back(0.01);
+    }
+  CellGrid grid;
+  NeighbourList list;
+  list.stride = 8;
+  const std::size_t centre = 24;
+  std::swap(x[0], x[centre]);  // the centre becomes the one real point
+  std::swap(z[0], z[centre]);
+  buildNeighbourList(x.data(), z.data(), h.data(), x.size(), 1, 1.5, grid, list);
+  ASSERT_EQ(list.count[0], 8);
+  std::vector<int> got(list.index.begin(), list.index.begin() + 8);
+  std::sort(got.begin(), got.end());
+  std::vector<int> expect;
+  for (std::size_t j = 1; j < x.size(); ++j)
+    if (std::abs(x[j] - x[0]) < 0.011 && std::abs(z[j] - z[0]) < 0.011)
+      expect.push_back(static_cast<int>(j));
+  EXPECT_EQ(got, expect);
 }
 
 TEST(Neighbours, RowsGrowWhenCompressed) {

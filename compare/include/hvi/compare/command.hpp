@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "hvi/common/snapshot.hpp"
+#include "hvi/compare/resample.hpp"
 
 namespace hvi::compare {
 
@@ -19,6 +20,9 @@ struct CompareCliOptions {
   //! Compare snapshots of different scenes (bodies, materials, domain differ) whose domains
   //! overlap; without it they are refused as unrelated problems.
   bool force = false;
+  //! How SPH particles are read onto the grid (docs/compare.md, "Sparse particles"); Constant is
+  //! the study's reading.
+  SphReconstruction sphReconstruction = SphReconstruction::Adaptive;
 };
 
 //! A snapshot file, or the snapshot of a run folder at `time` (within `tolerance`) or the last

@@ -53,8 +53,10 @@ struct Features {
 //! InputError if a part named by `cfg` is in neither the names nor the index range.
 Features measureFeatures(const Resampled& r, const FeatureConfig& cfg);
 //! Convenience for `hvi run`: resamples `s` first. A grid snapshot is measured on its own grid;
-//! particles on a covering grid of spacing `spacing` (0: the native particle spacing).
-Features measureFeatures(const Snapshot& s, const FeatureConfig& cfg, double spacing = 0.0);
+//! particles on a covering grid of spacing `spacing` (0: the native particle spacing), read as
+//! `opt` says (by default adaptively to the particle spacing).
+Features measureFeatures(const Snapshot& s, const FeatureConfig& cfg, double spacing = 0.0,
+                         const ResampleOptions& opt = {});
 
 //! Config from a scene: bodies named "striker" and "shield", else the first and second body;
 //! the shield band from the shield's bounding box; the axis through the striker's centre (x = 0

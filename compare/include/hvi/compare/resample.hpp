@@ -15,6 +15,19 @@ enum class RzMass {
   PerRadian,  //!< m = r rho A
 };
 
+//! The reconstruction length of a particle when it is read onto a grid (docs/compare.md,
+//! "Sparse particles").
+enum class SphReconstruction {
+  //! Each particle's own smoothing length and volume m/rho: the study's reading. Particles that
+  //! ended several h apart (an expanded debris cloud) leave vacuum between them.
+  Constant,
+  //! A particle stands for its share of the space around it: volume V' = max(m/rho, s^2), with
+  //! s the distance to its second-nearest neighbour (at most adaptiveMaxFactor h), length
+  //! max(h, sqrt(V')), density m / V'. A body's lattice at rest or compressed (h >= spacing)
+  //! reads as with Constant.
+  Adaptive,
+};
+
 struct ResampleOptions {
   //! A cell is material when the kernel-weighted particle fraction (or, for a grid source, the
   //! covered non-vacuum share of its area) is at least this.
@@ -22,7 +35,15 @@ struct ResampleOptions {
   //! Gaussian kernel support in units of h (the spec cuts it at 3h: section 3, docs/method.md).
   double kernelSupport = 3.0;
   RzMass rzMass = RzMass::Auto;
+  SphReconstruction sphReconstruction = SphReconstruction::Adaptive;
+  //! Adaptive: the largest reconstruction length, in units of the particle's own h. It bounds the
+  //! share of space a lone particle can claim and the neighbour search (cost ~ this^2).
+  double adaptiveMaxFactor = 4.0;
 };
+
+//! "constant" / "adaptive"; parseSphReconstruction throws InputError naming the allowed values.
+const char* toString(SphReconstruction r);
+SphReconstruction parseSphReconstruction(const std::string& name);
 
 //! A snapshot on a uniform grid. Vectors are indexed like Snapshot cells: k * nx + i.
 struct Resampled {

@@ -88,12 +88,15 @@ inline FaceEigen faceEigen(const CellState& L, const CellState& R, const double 
   const double dmu = dU[1] - f.u * dU[0];  // rho du
   const double uw = f.u * dU[1] + f.w * dU[2];
   const double deps = (dU[3] - uw) + f.q2h * dU[0];  // d(rho e)
-  const double inv2c2 = 0.5 / c2;
+  // One division: 0.5 / c2 = 0.5 (1 / c2) exactly; dp / c2 as dp (1 / c2) (issue 17).
+  const double invc2 = 1.0 / c2;
+  const double inv2c2 = 0.5 * invc2;
+  const double dpc2 = dp * invc2;
   f.alpha[0] = (dp - f.c * dmu) * inv2c2;
-  f.alpha[1] = dU[0] - dp / c2;
+  f.alpha[1] = dU[0] - dpc2;
   f.alpha[2] = dU[2] - f.w * dU[0];
   f.alpha[3] = (dp + f.c * dmu) * inv2c2;
-  f.alpha[4] = deps - h * (dp / c2);
+  f.alpha[4] = deps - h * dpc2;
   return f;
 }
 
@@ -102,7 +105,8 @@ inline FaceEigen faceEigen(const CellState& L, const CellState& R, const double 
 }
 
 //! out = sum over fields l of r_l * phi[l] (acoustic pair summed first: exact mirror symmetry).
-inline void applyRight(const FaceEigen& f, const double phi[kFields], double out[4]) {
+[[gnu::always_inline]] inline void applyRight(const FaceEigen& f, const double phi[kFields],
+                                             double out[4]) {
   const double sum = phi[0] + phi[3], diff = phi[3] - phi[0];
   out[0] = sum + phi[1];
   out[1] = (f.u * sum + f.c * diff) + f.u * phi[1];

@@ -8,9 +8,27 @@ namespace hvi::tvd {
 
 //! Harten's entropy fix: |z| away from 0, a parabola of half-width delta near 0, so that a
 //! transonic rarefaction does not keep a stationary expansion shock.
-inline double entropyFixedAbs(double z, double delta) {
+//! Both branches are computed and one selected, so that a loop over faces vectorises; with
+//! delta = 0 the unused parabola is inf or NaN and never selected. The parabola multiplies by
+//! 1 / (2 delta), which the four calls of one face share: one division per face instead of four
+//! (issue 17; round-off differs from dividing, in the parabola's range |z| < delta only).
+[[gnu::always_inline]] inline double entropyFixedAbs(double z, double delta) {
   const double a = std::abs(z);
-  return a >= delta ? a : (z * z + delta * delta) / (2.0 * delta);
+  const double parabola = (z * z + delta * delta) * (0.5 / delta);
+  return a >= delta ? a : parabola;
+}
+
+//! phi_l of one field of speed a, jump al, limited jumps gL, gR (hartenYeeFlux below).
+template <bool Acoustic>
+[[gnu::always_inline]] inline double hartenYeePhi(double a, double al, double gL, double gR,
+                                                  double delta) {
+  const double psiA = Acoustic ? entropyFixedAbs(a, delta) : std::abs(a);
+  const double sigma = 0.5 * psiA;
+  const bool zero = al == 0.0;  // select, not branch: alpha = 0 is common and unpredictable
+  const double gamma = (zero ? 0.0 : sigma * (gR - gL)) / (zero ? 1.0 : al);
+  const double z = a + gamma;
+  const double psiZ = Acoustic ? entropyFixedAbs(z, delta) : std::abs(z);
+  return sigma * (gL + gR) - psiZ * al;
 }
 
 //! Numerical flux of Harten-Yee's upwind TVD scheme (Yee 1989, eq. 4.33 with the method-of-
@@ -23,21 +41,17 @@ inline double entropyFixedAbs(double z, double delta) {
 //! right of it. psi has Harten's entropy fix (half-width `delta`) on the two acoustic fields
 //! only: the linearly degenerate fields use |a| so that a contact at rest stays exactly at rest
 //! (a free body in vacuum does not leak mass). With g = 0 this is Roe's first-order flux.
-inline void hartenYeeFlux(const FaceEigen& f, const double gL[kFields], const double gR[kFields],
-                          const double FL[4], const double FR[4], double delta, double out[4]) {
-  const double a[kFields] = {f.u - f.c, f.u, f.u, f.u + f.c, f.u};
-  double phi[kFields];
-  for (int l = 0; l < kFields; ++l) {
-    const bool acoustic = (l == 0 || l == 3);
-    const double psiA = acoustic ? entropyFixedAbs(a[l], delta) : std::abs(a[l]);
-    const double sigma = 0.5 * psiA;
-    const double al = f.alpha[l];
-    const bool zero = al == 0.0;  // select, not branch: alpha = 0 is common and unpredictable
-    const double gamma = (zero ? 0.0 : sigma * (gR[l] - gL[l])) / (zero ? 1.0 : al);
-    const double z = a[l] + gamma;
-    const double psiZ = acoustic ? entropyFixedAbs(z, delta) : std::abs(z);
-    phi[l] = sigma * (gL[l] + gR[l]) - psiZ * al;
-  }
+[[gnu::always_inline]] inline void hartenYeeFlux(const FaceEigen& f, const double gL[kFields],
+                                                const double gR[kFields], const double FL[4],
+                                                const double FR[4], double delta, double out[4]) {
+  // The fields are written out (no loop over l), so that a loop over faces calling this has no
+  // control flow left and vectorises.
+  const double phi[kFields] = {
+      hartenYeePhi<true>(f.u - f.c, f.alpha[0], gL[0], gR[0], delta),
+      hartenYeePhi<false>(f.u, f.alpha[1], gL[1], gR[1], delta),
+      hartenYeePhi<false>(f.u, f.alpha[2], gL[2], gR[2], delta),
+      hartenYeePhi<true>(f.u + f.c, f.alpha[3], gL[3], gR[3], delta),
+      hartenYeePhi<false>(f.u, f.alpha[4], gL[4], gR[4], delta)};
   double d[4];
   applyRight(f, phi, d);
   for (int k = 0; k < 4; ++k) out[k] = 0.5 * ((FL[k] + FR[k]) + d[k]);

@@ -27,6 +27,9 @@ struct Options {
   double entropyFix = 0.1;    //!< Harten's delta as a fraction of |u| + c at the face
   int contactIterations = 2;  //!< two-shock impedance updates at object/object faces
   int threads = 0;            //!< OpenMP threads for the sweeps; 0: omp_get_max_threads()
+  //! Without markers, sweep detail::kBatch lines at a time (vectorised across lines); false:
+  //! one line at a time, the reference the batches reproduce bit for bit (tests).
+  bool lineBatches = true;
 };
 
 //! Eulerian TVD solver (the scheme is specified in docs/tvd.md):
@@ -87,6 +90,8 @@ class TvdSolver final : public Solver {
   [[nodiscard]] double stableTimeStep() const;
   //! Cells whose owner changed since the start (markers only).
   [[nodiscard]] long ownerChanges() const { return ownership_.changes(); }
+  //! Lines of a line batch that needed the positivity fallback and were redone one at a time.
+  [[nodiscard]] long linesRedone() const;
   //! Cell volume (planar: cm^2 per cm of depth; r-z: 2 pi r dr dz, cm^3).
   [[nodiscard]] double cellVolume(long cell) const { return cellVolumes_(cell); }
   //! Cut-cell mode: cell-stages whose phases took one velocity (stiff exchange, docs/tvd.md

@@ -1,0 +1,59 @@
+//! @file The Gaussian pair terms of one particle's row, several pairs per vector register.
+//!
+//! The force passes (passes.cpp) sum per-pair terms over a particle's neighbour list. For the
+//! Gaussian kernel the terms are computed here in vector lanes (L pairs at a time, every
+//! condition a lane mask) and stored per pair; the pass then adds them up one by one in list
+//! order, so the sums are bit for bit those of the one-pair-at-a-time loop (pairTerms in
+//! pair_force.hpp), whatever the lane width: each lane does the same IEEE operations in the
+//! same order (no contraction into FMA), and the exponential's range reduction is exact.
+//! Three builds of the same code: baseline x86-64 (2 lanes) and, chosen at run time when the CPU
+//! has them, AVX2 (4 lanes, force_lanes_avx2.cpp) and AVX-512 (8 lanes, force_lanes_avx512.cpp).
+#pragma once
+#include <cstddef>
+
+namespace hvi::sph::detail {
+
+//! What the pair terms read of every point (reals and ghosts), PairArrays' columns.
+struct LaneArrays {
+  const double *x, *z, *vx, *vz, *rho, *c, *h, *mu, *rw, *q;
+  const int* obj;
+};
+
+//! Per-pair terms of one row, slot k for the k-th neighbour (capacity: the row's count rounded
+//! up to 8). A pair with W_ij = 0 has all terms 0, as if skipped.
+struct RowTerms {
+  double *ax, *az, *de;
+  double* drho;  //!< cached pass: mu_j v_ij . grad W over i's own object, else 0
+  double* hoop;  //!< r-z: mu_j q_j W_ij
+  double* phi;   //!< cached viscous pass: phi_ij (<= 0)
+  double *pwx, *pwz;  //!< compatible half-state pass: w_ij times the pair acceleration
+};
+
+//! Terms of row i: `nb` its cnt neighbours, `wc` their cached W (cached pass) or null.
+using RowKernel = void (*)(const LaneArrays& a, std::size_t i, const int* nb, const double* wc,
+                           int cnt, double alpha, double beta, const RowTerms& out);
+
+//! The list build's scan of the grid's sorted positions [s0, s1) around (xi, zi, hi): each
+//! position s is written at slot[min(cnt, last)] and cnt advances if |x - x_s| < sqrt(rf2) h_is
+//! (h_is = (hi + sh[s]) / 2, compared as rf2 h_is^2) and order[s] != self; with `w` (not null)
+//! its Gaussian W_is goes to w[min(cnt, last)]. Returns cnt. The same slots, values and count as
+//! that loop written one position at a time (the distances in lanes).
+using ScanKernel = int (*)(const double* sx, const double* sz, const double* sh, const int* order,
+                           int s0, int s1, double xi, double zi, double hi, double rf2, int self,
+                           int* slot, double* w, int cnt, int last);
+ScanKernel scanKernel();  //!< AVX-512 where the CPU has it, else baseline
+
+//! The kernel for the policy, for baseline x86-64 (2 lanes).
+RowKernel rowKernelBaseline(bool rz, bool viscous, bool cached, bool compatible);
+//! The same compiled for AVX-512 (8 lanes), or null where the CPU (or compiler) lacks it.
+RowKernel rowKernelAvx512(bool rz, bool viscous, bool cached, bool compatible);
+//! The same compiled for AVX2 (4 lanes), or null without compiler support.
+RowKernel rowKernelAvx2(bool rz, bool viscous, bool cached, bool compatible);
+ScanKernel scanKernelBaseline();
+ScanKernel scanKernelAvx512();  //!< null without compiler support
+ScanKernel scanKernelAvx2();    //!< null without compiler support
+//! The lane width the passes use: the widest the CPU has (8 AVX-512, 4 AVX2, else 2), capped
+//! by the environment variable HVI_SPH_LANES (2, 4 or 8) for side-by-side measurements.
+int laneWidth();
+
+}  // namespace hvi::sph::detail

@@ -1,0 +1,11 @@
+//! @file The lane kernels for baseline x86-64 (2 lanes; any CPU the build targets).
+#define HVI_LANES 2
+#define HVI_LANES_NS lanes_baseline
+#include "detail/force_lanes_impl.hpp"
+
+namespace hvi::sph::detail {
+RowKernel rowKernelBaseline(bool rz, bool viscous, bool cached, bool compatible) {
+  return lanes_baseline::pick(rz, viscous, cached, compatible);
+}
+ScanKernel scanKernelBaseline() { return &lanes_baseline::scan; }
+}  // namespace hvi::sph::detail
