@@ -32,12 +32,16 @@ double minmod(double a, double b) {
 
 void advectStrengthLine(StrengthState& st, StrengthLineWork& sw, const LineWork& w, int n,
                         double edgeMassLow, double rhoCut) {
+  advectStrengthLine(st, sw, w.u0[kRho].data(), w.invVol.data(), n, edgeMassLow, rhoCut);
+}
+
+void advectStrengthLine(StrengthState& st, StrengthLineWork& sw, const double* rhoNew,
+                        const double* invVol, int n, double edgeMassLow, double rhoCut) {
   const long* cells = sw.cells.data();
-  const double* rhoNew = w.u0[kRho].data();
   double* G = sw.massFlux.data();  // G[f]: face f between buffer cells f and f+1
   G[1] = edgeMassLow;
   for (int j = 2; j <= n + 1; ++j)
-    G[j] = G[j - 1] - (rhoNew[j] - sw.rhoOld[static_cast<std::size_t>(j)]) / w.invVol[j];
+    G[j] = G[j - 1] - (rhoNew[j] - sw.rhoOld[static_cast<std::size_t>(j)]) / invVol[j];
   double* q = sw.q.data();
   for (auto& rq : st.rq) {
     for (int j = 2; j <= n + 1; ++j) {
@@ -54,19 +58,19 @@ void advectStrengthLine(StrengthState& st, StrengthLineWork& sw, const LineWork&
       if (g > 0.0) {
         const int j = f;
         const double r = sw.rhoOld[static_cast<std::size_t>(j)];
-        const double nu = r > 0.0 && j >= 2 ? std::min(g * w.invVol[j] / r, 1.0) : 1.0;
+        const double nu = r > 0.0 && j >= 2 ? std::min(g * invVol[j] / r, 1.0) : 1.0;
         return g * (q[j] + 0.5 * (1.0 - nu) * minmod(q[j + 1] - q[j], q[j] - q[j - 1]));
       }
       const int j = f + 1;
       const double r = sw.rhoOld[static_cast<std::size_t>(j)];
-      const double nu = r > 0.0 && j <= n + 1 ? std::min(-g * w.invVol[j] / r, 1.0) : 1.0;
+      const double nu = r > 0.0 && j <= n + 1 ? std::min(-g * invVol[j] / r, 1.0) : 1.0;
       return g * (q[j] - 0.5 * (1.0 - nu) * minmod(q[j + 1] - q[j], q[j] - q[j - 1]));
     };
     double left = face(1);
     for (int j = 2; j <= n + 1; ++j) {
       const double right = face(j);
       const auto c = static_cast<std::size_t>(cells[j]);
-      rq[c] = rhoNew[j] >= rhoCut ? rq[c] + w.invVol[j] * (left - right) : 0.0;
+      rq[c] = rhoNew[j] >= rhoCut ? rq[c] + invVol[j] * (left - right) : 0.0;
       left = right;
     }
   }

@@ -33,11 +33,17 @@ struct StrengthLineWork {
       : rhoOld(static_cast<std::size_t>(capacity) + 4),
         massFlux(static_cast<std::size_t>(capacity) + 5),
         q(static_cast<std::size_t>(capacity) + 4),
-        cells(static_cast<std::size_t>(capacity) + 4) {}
+        cells(static_cast<std::size_t>(capacity) + 4),
+        rhoNew(static_cast<std::size_t>(capacity) + 4),
+        invVol(static_cast<std::size_t>(capacity) + 4),
+        lanes(static_cast<std::size_t>(capacity + 4) * 8) {}
   std::vector<double> rhoOld;    //!< the line's density before the sweep (buffer positions)
   std::vector<double> massFlux;  //!< time-integrated mass through face f (line units)
   std::vector<double> q;         //!< specific value of one component
   std::vector<long> cells;       //!< grid cell of each buffer position 2..n+1
+  std::vector<double> rhoNew;    //!< a batch lane's density after the sweep
+  std::vector<double> invVol;    //!< a batch lane's inverse cell volumes (line units)
+  std::vector<double> lanes;  //!< a batch's density before the sweep, as its buffers (<= 8 lanes)
 };
 
 //! Advects the strength scalars of one swept line (cells `cells[j]` at buffer positions
@@ -49,5 +55,9 @@ struct StrengthLineWork {
 //! uniform exactly and sum rho q V changes only through the domain's edges.
 void advectStrengthLine(StrengthState& st, StrengthLineWork& sw, const LineWork& w, int n,
                         double edgeMassLow, double rhoCut);
+//! The same with the density after the sweep and the inverse volumes given as buffers
+//! (positions 2..n+1): a lane of the four-line batches.
+void advectStrengthLine(StrengthState& st, StrengthLineWork& sw, const double* rhoNew,
+                        const double* invVol, int n, double edgeMassLow, double rhoCut);
 
 }  // namespace hvi::tvd::detail

@@ -150,9 +150,7 @@ void TvdSolver::sweep(int direction, double dt) {
   // Single-material planar and r-z axial lines go kB at a time through the batch kernel;
   // lines beyond the last whole batch, and every line otherwise, through LineSolver.
   constexpr int kB = detail::kBatch;
-  // Strength (docs/strength.md, TVD) advects its state per line after LineSolver: its scenes
-  // take the per-line path.
-  const bool batched = options_.lineBatches && !markersOn_ && !radial && N >= 2 && !strength_;
+  const bool batched = options_.lineBatches && !markersOn_ && !radial && N >= 2;
   const int groups = batched ? lines / kB : 0;
   const int items = groups + (lines - groups * kB);
   const cases::Material& material = materials_[static_cast<std::size_t>(singleMaterial_)];
@@ -281,6 +279,9 @@ void TvdSolver::sweep(int direction, double dt) {
       }
       detail::LineBudget lb[kB];
       bool redo[kB];
+      if (strength_)  // the density before the sweep: the strength advection's mass fluxes
+        std::copy_n(B.u0[detail::kRho].begin(), static_cast<std::size_t>(N + 4) * kB,
+                    ws.strength->lanes.begin());
       batchFn(B, bsetup, ctx, material, lb, redo);
       bool anyRedo = false;
       for (int l = 0; l < kB; ++l) anyRedo = anyRedo || redo[l];
@@ -301,6 +302,18 @@ void TvdSolver::sweep(int direction, double dt) {
           for (int k = 0; k < 4; ++k)
             for (int pos = 0; pos < N; ++pos)
               arrays[k][base + pos * step] = B.u0[k][(pos + 2) * kB + l];
+        if (strength_) {  // docs/strength.md, TVD: the lane's strength state moves with its mass
+          detail::StrengthLineWork& S = *ws.strength;
+          for (int j = 2; j <= N + 1; ++j) {
+            const auto i = static_cast<std::size_t>(j * kB + l), jj = static_cast<std::size_t>(j);
+            S.rhoOld[jj] = S.lanes[i];
+            S.rhoNew[jj] = B.u0[detail::kRho][i];
+            S.invVol[jj] = bsetup.invVol;
+            S.cells[jj] = base + (j - 2) * step;
+          }
+          detail::advectStrengthLine(*strength_, S, S.rhoNew.data(), S.invVol.data(), N,
+                                     lb[l].edge[0].mass, bsetup.rhoCut);
+        }
         const double lineScale =
             rz ? 2.0 * std::numbers::pi * cellX_[static_cast<std::size_t>(line)] * h : h;
         LineRecord& rec = lineRecords_[static_cast<std::size_t>(line)];
