@@ -11,6 +11,7 @@
 #include "hvi/cases/names.hpp"
 #include "hvi/common/units.hpp"
 #include "hvi/eos/eos.hpp"
+#include "hvi/strength/strength.hpp"
 #include "hvi/tvd/tvd.hpp"
 
 #ifdef _OPENMP
@@ -110,6 +111,33 @@ void throughput(double h, int steps) {
       updates / wall / threads(), cpu, updates / cpu);
 }
 
+// Issue 15: the cost of a cell step with the effect strength against the hydrodynamic one, on
+// the throughput scene with the Steinberg-Guinan 6061-T6 preset, the two interleaved twice
+// (one load for both), in CPU time per cell-update.
+void strengthCost(double h, int steps) {
+  double perUpdate[2][2] = {};
+  for (int round = 0; round < 2; ++round) {
+    for (int strong = 0; strong < 2; ++strong) {
+      cases::Scene scene = throughputScene(h);
+      if (strong == 1) {
+        scene.effects.insert(cases::Effect::Strength);
+        scene.materials[0].strength = strength::findPreset("al6061_t6")->material;
+      }
+      tvd::TvdSolver solver(scene);
+      solver.advance(1e9);
+      const double c0 = cpuSeconds();
+      for (int i = 0; i < steps; ++i) solver.advance(1e9);
+      perUpdate[round][strong] =
+          (cpuSeconds() - c0) / (static_cast<double>(solver.workItems()) * steps);
+    }
+    std::printf(
+        "strength cost, round %d (%.3g cm, %d steps): %.3g CPU-us per cell-update hydrodynamic, "
+        "%.3g with strength: ratio %.3f\n",
+        round + 1, h, steps, 1e6 * perUpdate[round][0], 1e6 * perUpdate[round][1],
+        perUpdate[round][1] / perUpdate[round][0]);
+  }
+}
+
 // Cut cells of a conservative run (some phase with 0 < alpha < 1) per cell length of marker
 // line: the thickness, in cells, of the layer the interfaces occupy (issue 13 bounds it by 2).
 double cutLayerCells(const tvd::TvdSolver& solver) {
@@ -182,6 +210,9 @@ int main(int argc, char** argv) {
   app.add_flag("--throughput", doThroughput, "cell-update throughput, single material");
   app.add_option("--cell", h, "cell size of the throughput problem, cm");
   app.add_option("--steps", steps, "timed steps of the throughput problem");
+  bool doStrength = false;
+  app.add_flag("--strength-cost", doStrength,
+               "throughput with and without the effect strength, interleaved (ratio)");
   app.add_flag("--variant1", doVariant1, "CASES.md variant 1 (r-z sphere on plate)");
   app.add_option("--t-end", tEnd, "end time of variant 1, us");
   app.add_flag("--no-markers", noMarkers, "variant 1 without marker lines (one fluid)");
@@ -191,8 +222,9 @@ int main(int argc, char** argv) {
                  "(prints the wall-time ratio)")
       ->check(CLI::IsMember({"whole_cell", "conservative", "both"}));
   CLI11_PARSE(app, argc, argv);
-  if (!doThroughput && !doVariant1) doThroughput = doVariant1 = true;
+  if (!doThroughput && !doVariant1 && !doStrength) doThroughput = doVariant1 = true;
   try {
+    if (doStrength) strengthCost(h, steps);
     if (doThroughput) throughput(h, steps);
     if (doVariant1) {
       using cases::InterfaceMode;

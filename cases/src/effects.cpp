@@ -26,8 +26,9 @@ constexpr std::array kSph{Effect::ArtificialViscosity, Effect::TensionCutoff,
                           Effect::MassAdjustment,      Effect::PhaseBookkeeping,
                           Effect::EnergyBudget,        Effect::Features,
                           Effect::Strength,            Effect::Fracture};
-constexpr std::array kTvd{Effect::TensionCutoff, Effect::MaterialInterfaces,
-                          Effect::PhaseBookkeeping, Effect::EnergyBudget, Effect::Features};
+constexpr std::array kTvd{Effect::TensionCutoff,    Effect::MaterialInterfaces,
+                          Effect::PhaseBookkeeping, Effect::EnergyBudget,
+                          Effect::Features,         Effect::Strength};
 constexpr std::array kRiemann{Effect::EnergyBudget};  // the exact solution has no physics to add
 }  // namespace
 

@@ -193,6 +193,15 @@ void checkStrength(const TableReader& root, const Scene& scene) {
   if (scene.has(Effect::Strength) && !any)
     root.fail("effects", "\"strength\" is named but no material has a strength table",
               "[materials.<name>.strength] for the solids");
+  // TVD carries the deviator for one material without marker lines only (docs/strength.md,
+  // "TVD with strength"; the stress per phase with interfaces is open).
+  if (scene.solver == SolverKind::Tvd && scene.has(Effect::Strength) &&
+      scene.has(Effect::MaterialInterfaces))
+    root.fail("effects",
+              "the TVD solver runs \"strength\" without \"material_interfaces\" only (one "
+              "material, no marker lines; the deviator per phase at interfaces is not built)",
+              "effects without \"material_interfaces\" and one material for every body, or "
+              "solver = \"sph\"");
 }
 
 void checkRiemann(const TableReader& root, const Scene& scene, const Sources& src, double tol) {

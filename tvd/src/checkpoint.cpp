@@ -9,15 +9,19 @@
 #include "hvi/common/binary.hpp"
 #include "hvi/common/error.hpp"
 #include "hvi/tvd/tvd.hpp"
+#include "strength_step.hpp"
 
 namespace hvi::tvd {
 namespace {
 
 constexpr std::uint64_t kMagic = 0x31304456544956ULL;  // "VITVD01" little-endian tag
-// 4: an interface-mode flag after the markers flag, and the cut-cell phases after the marker
-// lines; 3 (read too): the outflow budget after the ledger (Ledger::outflow); 2 (read too) had
-// none, its boundary budget held the outflow sides and the walls together.
-constexpr std::uint32_t kVersion = 4;
+// 5 (written only with the effect strength, which a scene without it must not change): a
+// strength flag after the interface-mode flag and rho times the deviator and the plastic strain
+// at the end; 4: an interface-mode flag after the markers flag, and the cut-cell phases after the
+// marker lines; 3 (read too): the outflow budget after the ledger (Ledger::outflow); 2 (read too)
+// had none, its boundary budget held the outflow sides and the walls together.
+constexpr std::uint32_t kVersion = 5;
+constexpr std::uint32_t kVersionWithoutStrength = 4;
 
 void putBudget(BinaryWriter& w, const Budget& b) {
   for (double v : {b.mass, b.momentumX, b.momentumZ, b.energy}) w.value(v);
@@ -44,12 +48,13 @@ void getConserved(BinaryReader& r, Conserved& U, std::size_t n, const std::strin
 void TvdSolver::writeCheckpoint(std::ostream& out) const {
   BinaryWriter w(out, "tvd checkpoint");
   w.value(kMagic);
-  w.value(kVersion);
+  w.value(strength_ ? kVersion : kVersionWithoutStrength);
   w.value<std::int32_t>(grid_.nx);
   w.value<std::int32_t>(grid_.nz);
   w.value<std::int32_t>(geometry_ == Geometry::Axisymmetric ? 1 : 0);
   w.value<std::int32_t>(markersOn_ ? 1 : 0);
   w.value<std::int32_t>(cut_ ? 1 : 0);
+  if (strength_) w.value<std::int32_t>(1);
   w.value(time_);
   w.value(dt0_);
   w.value<std::int64_t>(step_);
@@ -73,6 +78,8 @@ void TvdSolver::writeCheckpoint(std::ostream& out) const {
       w.array(phases_.alpha[static_cast<std::size_t>(p)]);
     }
   }
+  if (strength_)
+    for (const auto& a : strength_->rq) w.array(a);
 }
 
 void TvdSolver::readCheckpoint(std::istream& in) {
@@ -86,6 +93,11 @@ void TvdSolver::readCheckpoint(std::istream& in) {
   const auto nx = r.value<std::int32_t>(), nz = r.value<std::int32_t>();
   const auto rz = r.value<std::int32_t>(), markers = r.value<std::int32_t>();
   const auto cut = version >= 4 ? r.value<std::int32_t>() : 0;
+  const auto withStrength = version >= 5 ? r.value<std::int32_t>() : 0;
+  if ((withStrength == 1) != (strength_ != nullptr))
+    throw InputError(
+        fmt::format("tvd checkpoint: written {} the effect strength, this scene runs {} it",
+                    withStrength == 1 ? "with" : "without", strength_ ? "with" : "without"));
   if (nx != grid_.nx || nz != grid_.nz || (rz == 1) != (geometry_ == Geometry::Axisymmetric) ||
       (markers == 1) != markersOn_ || (cut == 1) != cut_)
     throw InputError(fmt::format(
@@ -135,6 +147,14 @@ void TvdSolver::readCheckpoint(std::istream& in) {
     phases_.coverOccupied();
     volumeFresh_ = true;
     orphans_ = static_cast<long>(orphans);
+  }
+  if (strength_) {
+    const char* names[detail::kStrengthFields] = {"rho s_xx", "rho s_zz", "rho s_xz",
+                                                  "rho plastic strain"};
+    std::array<std::vector<double>, detail::kStrengthFields> rq;
+    for (int k = 0; k < detail::kStrengthFields; ++k)
+      r.array(rq[static_cast<std::size_t>(k)], n, names[k]);
+    strength_->rq = std::move(rq);
   }
   U_ = std::move(U);
   time_ = t;

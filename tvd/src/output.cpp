@@ -3,7 +3,9 @@
 
 #include "eos_line.hpp"
 #include "hvi/common/snapshot.hpp"
+#include "hvi/common/units.hpp"
 #include "hvi/tvd/tvd.hpp"
+#include "strength_step.hpp"
 
 namespace hvi::tvd {
 
@@ -74,6 +76,35 @@ Snapshot TvdSolver::snapshot() const {
   if (phaseOn_) {
     s.fields.push_back(std::move(frac));
     s.fields.push_back(std::move(phase));
+  }
+  if (strength_) {
+    // docs/strength.md, "TVD": the specific deviator (stt = -(sxx + szz): the out-of-plane
+    // component in plane strain, the hoop one in r-z), the equivalent plastic strain and the
+    // temperature model's T; 0 in vacuum cells and for a fluid.
+    const detail::StrengthState& st = *strength_;
+    std::vector<double> sxx(n, 0.0), szz(n, 0.0), sxz(n, 0.0), stt(n, 0.0), eps(n, 0.0),
+        temp(n, 0.0);
+    const double rc = rhoCut_[static_cast<std::size_t>(singleMaterial_)];
+    for (std::size_t c = 0; c < n; ++c) {
+      const double r = U_.rho[c];
+      if (!(r >= rc)) continue;
+      sxx[c] = st.rq[detail::kSxx][c] / r;
+      szz[c] = st.rq[detail::kSzz][c] / r;
+      sxz[c] = st.rq[detail::kSxz][c] / r;
+      stt[c] = -(sxx[c] + szz[c]);
+      eps[c] = st.rq[detail::kEps][c] / r;
+      const double es = (U_.E[c] - 0.5 * (U_.mx[c] * U_.mx[c] + U_.mz[c] * U_.mz[c]) / r) / r;
+      if (st.solid) temp[c] = st.material.thermal.temperature(r / st.rho0, es);
+    }
+    const auto add = [&](const char* name, const char* unit, std::vector<double>& v) {
+      s.fields.push_back({name, unit, 1, std::move(v)});
+    };
+    add("stress_deviator_xx", units::pressureName, sxx);
+    add("stress_deviator_zz", units::pressureName, szz);
+    add("stress_deviator_xz", units::pressureName, sxz);
+    add("stress_deviator_tt", units::pressureName, stt);
+    add("plastic_strain", "1", eps);
+    add("temperature", "K", temp);
   }
   for (const auto& m : sceneMaterials_) s.materialNames.push_back(m.name);
   if (markersOn_) {

@@ -49,6 +49,7 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
     ownership_.setUp(scene, cellVolumes_, objectMaterial_, bodyStates_,
                      static_cast<int>(materials_.size()), threads_);
   }
+  setUpStrength(scene);
   if (cut_) {
     initialiseCut(scene);
     return;
@@ -168,6 +169,9 @@ double TvdSolver::signalSpeedPass(double* vx, double* vz, long* worstCell) const
             const double r = U_.rho[cc];
             if (!(r > 0.0)) return -1;
             s = detail::cellState(eos, r, U_.mx[cc], U_.mz[cc], U_.E[cc]);
+            // Strength: the longitudinal wave c_L = sqrt(c^2 + 4G / (3 rho)) is the fastest.
+            if (strength_)
+              s.c = strength::longitudinalSoundSpeed(s.c, strengthShearModulus(r, s.e, s.p), r);
             if (vx != nullptr) {  // an unphysical state stops the run below, whatever it wrote
               vx[c] = s.u;
               vz[c] = s.w;
@@ -243,6 +247,7 @@ double TvdSolver::advance(double tStop) {
     sweep(1, dt);
     sweep(0, dt);
   }
+  if (strength_) strengthStep(dt);
   if (markersOn_ && !cut_) ownership_.update(U_, dt, ledger_.ownerChanges);
   time_ = last ? tStop : time_ + dt;
   ++step_;

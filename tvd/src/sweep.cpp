@@ -221,6 +221,11 @@ void TvdSolver::sweep(int direction, double dt) {
 
       detail::LineBudget lb;
       detail::LineFailure fail;
+      if (strength_)  // the density before the sweep: the strength advection's mass fluxes
+        for (int j = 2; j <= n + 1; ++j) {
+          ws.strength->rhoOld[static_cast<std::size_t>(j)] = W.u0[detail::kRho][j];
+          ws.strength->cells[static_cast<std::size_t>(j)] = at(a - 2 + j);
+        }
       if (!fn(W, setup, ctx, lb, fail)) {
         ws.fail(line, detail::failureMessage(step_, xdir, dt, a, line, grid_, fail));
         return;
@@ -229,6 +234,9 @@ void TvdSolver::sweep(int direction, double dt) {
         const long c = at(a - 2 + j);
         for (int k = 0; k < 4; ++k) arrays[k][c] = W.u0[k][j];
       }
+      if (strength_)
+        detail::advectStrengthLine(*strength_, *ws.strength, W, n, lb.edge[0].mass,
+                                   rhoCut_[static_cast<std::size_t>(singleMaterial_)]);
       rec.interfaces = lb.interfaces.scaled(lineScale);
       rec.floors = lb.floors.scaled(lineScale);
       rec.bookEdges(lb, setup, lowSide, highSide, lineScale);
@@ -271,6 +279,9 @@ void TvdSolver::sweep(int direction, double dt) {
       }
       detail::LineBudget lb[kB];
       bool redo[kB];
+      if (strength_)  // the density before the sweep: the strength advection's mass fluxes
+        std::copy_n(B.u0[detail::kRho].begin(), static_cast<std::size_t>(N + 4) * kB,
+                    ws.strength->lanes.begin());
       batchFn(B, bsetup, ctx, material, lb, redo);
       bool anyRedo = false;
       for (int l = 0; l < kB; ++l) anyRedo = anyRedo || redo[l];
@@ -291,6 +302,18 @@ void TvdSolver::sweep(int direction, double dt) {
           for (int k = 0; k < 4; ++k)
             for (int pos = 0; pos < N; ++pos)
               arrays[k][base + pos * step] = B.u0[k][(pos + 2) * kB + l];
+        if (strength_) {  // docs/strength.md, TVD: the lane's strength state moves with its mass
+          detail::StrengthLineWork& S = *ws.strength;
+          for (int j = 2; j <= N + 1; ++j) {
+            const auto i = static_cast<std::size_t>(j * kB + l), jj = static_cast<std::size_t>(j);
+            S.rhoOld[jj] = S.lanes[i];
+            S.rhoNew[jj] = B.u0[detail::kRho][i];
+            S.invVol[jj] = bsetup.invVol;
+            S.cells[jj] = base + (j - 2) * step;
+          }
+          detail::advectStrengthLine(*strength_, S, S.rhoNew.data(), S.invVol.data(), N,
+                                     lb[l].edge[0].mass, bsetup.rhoCut);
+        }
         const double lineScale =
             rz ? 2.0 * std::numbers::pi * cellX_[static_cast<std::size_t>(line)] * h : h;
         LineRecord& rec = lineRecords_[static_cast<std::size_t>(line)];

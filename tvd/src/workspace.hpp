@@ -6,10 +6,10 @@
 #include <utility>
 #include <vector>
 
-#include "hvi/tvd/tvd.hpp"
 #include "cut_line.hpp"
 #include "line_batch.hpp"
 #include "line_work.hpp"
+#include "strength_step.hpp"
 
 namespace hvi::tvd {
 
@@ -18,6 +18,7 @@ struct TvdSolver::Workspace {
   detail::LineWork line;
   std::unique_ptr<detail::CutLineWork> cut;  // cut-cell mode only
   std::unique_ptr<detail::BatchWork> batch;  // single material (no markers) only
+  std::unique_ptr<detail::StrengthLineWork> strength;  // effect strength only
   long redone = 0;  // batch lanes redone by LineSolver (positivity fallback)
   bool failed = false;
   int failedLine = 0;  // the lowest failed line this thread saw: the report does not depend on

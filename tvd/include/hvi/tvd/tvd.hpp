@@ -14,6 +14,9 @@
 #include "hvi/tvd/state.hpp"
 
 namespace hvi::tvd {
+namespace detail {
+struct StrengthState;
+}
 
 //! The solver the `hvi` command drives for `solver = "tvd"` scenes. Throws hvi::InputError for
 //! a scene the solver cannot run (see TvdSolver).
@@ -79,6 +82,10 @@ class TvdSolver final : public Solver {
   //! Index array: material of each object.
   [[nodiscard]] const std::vector<int>& objectMaterial() const { return objectMaterial_; }
   [[nodiscard]] const Ledger& ledger() const { return ledger_; }
+  //! Effect strength: rho times component k of the strength state per cell (0: s_xx, 1: s_zz,
+  //! 2: s_xz, 3: the equivalent plastic strain), for tests that set up a state the scene cannot
+  //! express. Throws std::logic_error without the effect.
+  std::vector<double>& strengthStateForTesting(int k);
   //! Largest stable step of the current state, us.
   [[nodiscard]] double stableTimeStep() const;
   //! Cells whose owner changed since the start (markers only).
@@ -104,6 +111,11 @@ class TvdSolver final : public Solver {
   void sweepCut(int direction, double dt);
   void finishSweep(int lines);  // failure report or the line records into the ledger
   void initialiseCut(const cases::Scene& scene);
+  // Effect strength (strength_step.cpp, docs/strength.md "TVD"): the state, the sub-step after
+  // the sweeps, and the shear modulus of a cell's state (the time step's c_L).
+  void setUpStrength(const cases::Scene& scene);
+  void strengthStep(double dt);
+  [[nodiscard]] double strengthShearModulus(double rho, double e, double p) const;
   // Body `body`'s initial state at the centre of `cell` (a radial velocity field sampled there).
   [[nodiscard]] Ownership::ObjectState stateAtCentre(const cases::Scene& scene, std::size_t body,
                                                      std::size_t cell) const;
@@ -147,6 +159,11 @@ class TvdSolver final : public Solver {
   // thin film"). Its mass is still conserved exactly.
   static constexpr double kStepDensityFraction = 1e-4;
   std::vector<double> rhoStep_;
+  // Effect strength: below kStrengthDensityFraction * rho0 a cell carries no deviator. Intact
+  // solid never stretches that far (aluminium would need some -15 GPa); what does is a free
+  // surface's partly filled cell (the single material's average with the vacuum beside it) or
+  // material torn apart, and a deviator there would push a nearly empty cell at any speed.
+  static constexpr double kStrengthDensityFraction = 0.8;
   int singleMaterial_ = 0;  // the material of a run without markers
   bool markersOn_ = false;  // effect material_interfaces: marker lines and ownership_
   bool phaseOn_ = false;    // effect phase_bookkeeping: vapour fraction and phase in snapshots
@@ -173,6 +190,8 @@ class TvdSolver final : public Solver {
   int threads_ = 1;
   std::vector<std::unique_ptr<Workspace>> work_;
   std::vector<LineRecord> lineRecords_;
+  // Effect strength: rho times the deviator and the plastic strain per cell (null without it).
+  std::unique_ptr<detail::StrengthState> strength_;
 };
 
 }  // namespace hvi::tvd
