@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "hvi/test/two_wave.hpp"
 #include "hvi/cases/effects.hpp"
 #include "hvi/common/error.hpp"
 #include "hvi/test/tvd_scenes.hpp"
@@ -223,36 +224,15 @@ TEST(TvdStrength, ElasticPrecursorCarriesTheHugoniotElasticLimit) {
   TvdSolver solver(slab(dx, 2, 1.8, 0.6, 0.02, y0, true));
   runTo(solver, 2.5);
   const Profile p = profile(solver);
-  double flattest = 1e300, plateau = 0.0, peak = 0.0;
-  std::size_t at = 0;
-  for (std::size_t r = 2; r + 2 < p.z.size(); ++r) {
-    peak = std::max(peak, p.stress[r]);
-    if (p.stress[r] < 0.5 * hel || p.stress[r] > 1.5 * hel) continue;
-    const double slope = std::abs(p.stress[r + 2] - p.stress[r - 2]);
-    if (slope < flattest) {
-      flattest = slope;
-      plateau = p.stress[r];
-      at = r;
-    }
-  }
-  double zElastic = 0.0, zPlastic = 0.0;
-  for (std::size_t r = 0; r < p.z.size(); ++r)
-    if (p.stress[r] >= 0.5 * hel) {
-      zElastic = p.z[r];
-      break;
-    }
-  for (std::size_t r = 0; r < p.z.size(); ++r)
-    if (p.stress[r] >= 0.5 * (hel + peak)) {
-      zPlastic = p.z[r];
-      break;
-    }
+  const hvi::test::TwoWave w = hvi::test::twoWave(p.z, p.stress, hel);
   std::printf(
       "nu = %.4f, sigma_HEL = %.6f Mbar; plateau %.6f (%.2f %%) at z = %.3f, peak %.5f; "
       "fronts: elastic z = %.3f, plastic z = %.3f\n",
-      nu, hel, plateau, 100.0 * (plateau / hel - 1.0), p.z[at], peak, zElastic, zPlastic);
-  EXPECT_NEAR(plateau / hel, 1.0, 0.03);
-  EXPECT_GT(peak, 2.0 * hel);
-  EXPECT_GT(zPlastic - zElastic, 10.0 * dx);
+      nu, hel, w.plateau, 100.0 * (w.plateau / hel - 1.0), w.zPlateau, w.peak, w.zElastic,
+      w.zPlastic);
+  EXPECT_NEAR(w.plateau / hel, 1.0, 0.03);
+  EXPECT_GT(w.peak, 2.0 * hel);
+  EXPECT_GT(w.zPlastic - w.zElastic, 10.0 * dx);
 }
 
 // A 2 km/s block impact (some 30 x the yield: strongly plastic) with the Steinberg-Guinan
