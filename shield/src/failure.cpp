@@ -193,7 +193,11 @@ RearWallState measureRearWall(const Snapshot& s, const RearWallConfig& cfg, doub
       start = -1;
     }
   }
-  if (start >= 0) close(start, i);
+  // An opening that reaches the plate's rim without reaching the axis is the free edge coming
+  // loose (measured: the outermost ring of an intact SPH rear wall, r = 5.58-5.63 cm of 5.63,
+  // read as open at 5 and 12 km/s), not a hole through the plate: only an opening that spans
+  // the whole plate from the axis counts there.
+  if (start == 0) close(start, i);
 
   // Detached spall: a lighter piece, downrange of the main piece's centroid, moving away from
   // it along the impact direction.

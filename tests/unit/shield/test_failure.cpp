@@ -90,6 +90,19 @@ TEST(RearWallFailure, ThroughHoleAtTheAxis) {
   EXPECT_DOUBLE_EQ(st.thinnestFraction, 0.0);
 }
 
+TEST(RearWallFailure, LooseRimIsNotAHole) {
+  // The outermost two columns of the plate are gone (its free edge came loose, as SPH rear walls
+  // show at the plate radius): the wall inside is whole, so nothing is perforated.
+  const Snapshot s =
+      grid([](double x, double z) { return inWall(z) && x < 1.9 ? 2 : -1; }, still);
+  const RearWallState st = measureRearWall(s, config());
+  EXPECT_TRUE(st.holes.empty());
+  EXPECT_FALSE(st.perforated());
+  // No wall left anywhere inside the plate radius is the plate gone: perforated.
+  const Snapshot gone = grid([](double, double) { return -1; }, still);
+  EXPECT_TRUE(measureRearWall(gone, config()).perforated());
+}
+
 TEST(RearWallFailure, ThinnedWallIsNotAHole) {
   // Half the thickness left near the axis (2 of 4 cells): areal fraction 0.5 > 0.1.
   const Snapshot s =
