@@ -43,6 +43,15 @@ Features measureFeatures(const Resampled& r, const FeatureConfig& cfg) {
   const int shield = resolve(names, cfg.shield, cfg.shieldIndex, "shield", kind);
   const int striker = resolve(names, cfg.striker, cfg.strikerIndex, "striker", kind);
   const std::vector<int>& part = cfg.byMaterial ? r.material : r.object;
+  // The striker's own partial density: its centroid is that of its own mass, wherever it lies
+  // (a mixed cell counts only the striker's share; a spray cell dominated by shield still counts
+  // the striker in it).
+  const std::vector<double>& partRho = cfg.byMaterial ? r.materialDensity : r.objectDensity;
+  const auto cells = static_cast<std::size_t>(r.grid.cells());
+  const double* strikerRho =
+      partRho.size() >= (static_cast<std::size_t>(striker) + 1) * cells && striker >= 0
+          ? partRho.data() + static_cast<std::size_t>(striker) * cells
+          : nullptr;
 
   const GridSpec& g = r.grid;
   const double s = cfg.direction;
@@ -70,6 +79,11 @@ Features measureFeatures(const Resampled& r, const FeatureConfig& cfg) {
         f.peakDensityX = x;
         f.peakDensityZ = z;
       }
+      if (strikerRho != nullptr && strikerRho[c] > 0.0) {
+        const double m = strikerRho[c] * r.cellVolume(i);
+        strikerMass += m;
+        strikerMoment += m * z;
+      }
       if (r.material[c] < 0) continue;
       if (inBand && part[c] == shield) updateMin(f.holeRadius, std::max(0.0, ax - 0.5 * g.dx));
       if (beyond) {
@@ -82,9 +96,11 @@ Features measureFeatures(const Resampled& r, const FeatureConfig& cfg) {
       if (part[c] == striker) {
         updateMin(f.strikerZMin, z - 0.5 * g.dz);
         updateMax(f.strikerZMax, z + 0.5 * g.dz);
-        const double m = r.density[c] * r.cellVolume(i);
-        strikerMass += m;
-        strikerMoment += m * z;
+        if (strikerRho == nullptr) {  // a hand-made field without partial densities
+          const double m = r.density[c] * r.cellVolume(i);
+          strikerMass += m;
+          strikerMoment += m * z;
+        }
       }
     }
   }

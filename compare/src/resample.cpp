@@ -70,6 +70,8 @@ Resampled emptyResult(const Snapshot& s, const GridSpec& grid) {
   r.materialNames = classNames(s.materialNames, mat ? &mat->data : nullptr, "material");
   r.objectNames = classNames(s.objectNames, obj ? &obj->data : nullptr, "object");
   r.hasObject = obj != nullptr;
+  r.materialDensity.assign(n * std::max<std::size_t>(1, r.materialNames.size()), 0.0);
+  if (r.hasObject) r.objectDensity.assign(n * r.objectNames.size(), 0.0);
   return r;
 }
 

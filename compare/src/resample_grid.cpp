@@ -59,13 +59,18 @@ Resampled resampleGrid(const Snapshot& s, const GridSpec& grid, const ResampleOp
 
 #pragma omp parallel
   {
-    std::vector<double> matW(nMat), objW(nObj);  // once per thread, reused for every cell
+    // Once per thread, reused for every cell: covered areas and masses per class.
+    std::vector<double> matW(nMat), objW(nObj), matM(nMat), objM(nObj);
+    const bool objects = !out.objectDensity.empty();
+    const auto cells = static_cast<std::size_t>(grid.cells());
 #pragma omp for schedule(static)
     for (int k = 0; k < grid.nz; ++k) {
       for (int i = 0; i < grid.nx; ++i) {
         double mass = 0.0, filled = 0.0;
         std::fill(matW.begin(), matW.end(), 0.0);
         std::fill(objW.begin(), objW.end(), 0.0);
+        std::fill(matM.begin(), matM.end(), 0.0);
+        std::fill(objM.begin(), objM.end(), 0.0);
         for (int a = oz.start[k]; a < oz.start[k + 1]; ++a) {
           const long row = static_cast<long>(oz.src[a]) * g.nx;
           for (int b = ox.start[i]; b < ox.start[i + 1]; ++b) {
@@ -78,8 +83,9 @@ Resampled resampleGrid(const Snapshot& s, const GridSpec& grid, const ResampleOp
             if (m < 0) continue;
             filled += w;
             matW[m] += w;
+            matM[m] += w * rho.data[sc];
             const int ob = obj ? static_cast<int>(std::lround(obj->data[sc])) : -1;
-            if (ob >= 0) objW[ob] += w;
+            if (ob >= 0) objW[ob] += w, objM[ob] += w * rho.data[sc];
           }
         }
         const double vol = oz.full[k] * ox.full[i];
@@ -87,6 +93,11 @@ Resampled resampleGrid(const Snapshot& s, const GridSpec& grid, const ResampleOp
         // Uncovered parts of the target cell are vacuum: density 0, so mass is conserved.
         out.density[cell] = mass / vol;
         out.fraction[cell] = filled / vol;
+        // Partial densities for every cell, material or not, so that each class's mass is
+        // conserved like the total.
+        for (std::size_t m = 0; m < nMat; ++m) out.materialDensity[m * cells + cell] = matM[m] / vol;
+        if (objects)
+          for (std::size_t o = 0; o < nObj; ++o) out.objectDensity[o * cells + cell] = objM[o] / vol;
         if (out.fraction[cell] >= opt.materialThreshold) {
           out.material[cell] = static_cast<int>(std::max_element(matW.begin(), matW.end()) -
                                                 matW.begin());

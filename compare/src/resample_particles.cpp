@@ -199,7 +199,10 @@ Resampled resampleParticles(const Snapshot& s, const GridSpec& grid, const Resam
 
 #pragma omp parallel
   {
-    std::vector<double> matW(nMat), objW(nObj);  // once per thread, reused for every cell
+    // Once per thread, reused for every cell: kernel weights and weighted densities per class.
+    std::vector<double> matW(nMat), objW(nObj), matRho(nMat), objRho(nObj);
+    const bool objects = !out.objectDensity.empty();
+    const auto cells = static_cast<std::size_t>(grid.cells());
 #pragma omp for schedule(dynamic, 4)
     for (int k = 0; k < grid.nz; ++k) {
       const double pz = out.zCentre(k);
@@ -208,11 +211,14 @@ Resampled resampleParticles(const Snapshot& s, const GridSpec& grid, const Resam
         double sumW = 0.0, sumRho = 0.0;
         std::fill(matW.begin(), matW.end(), 0.0);
         std::fill(objW.begin(), objW.end(), 0.0);
+        std::fill(matRho.begin(), matRho.end(), 0.0);
+        std::fill(objRho.begin(), objRho.end(), 0.0);
         gather(c, px, pz, mirror, [&](int q, double w) {
           sumW += w;
           sumRho += w * c.rho[q];
           matW[c.mat[q]] += w;
-          if (c.obj[q] >= 0) objW[c.obj[q]] += w;
+          matRho[c.mat[q]] += w * c.rho[q];
+          if (c.obj[q] >= 0) objW[c.obj[q]] += w, objRho[c.obj[q]] += w * c.rho[q];
         });
         const long cell = static_cast<long>(k) * grid.nx + i;
         out.fraction[cell] = sumW;
@@ -220,6 +226,11 @@ Resampled resampleParticles(const Snapshot& s, const GridSpec& grid, const Resam
           out.density[cell] = sumRho / sumW;
           out.material[cell] = argmax(matW);
           out.object[cell] = argmax(objW);
+          for (std::size_t m = 0; m < nMat; ++m)
+            out.materialDensity[m * cells + cell] = matRho[m] / sumW;
+          if (objects)
+            for (std::size_t o = 0; o < nObj; ++o)
+              out.objectDensity[o * cells + cell] = objRho[o] / sumW;
         }
       }
     }

@@ -49,13 +49,9 @@ TEST(Variant1Coarse, BothSolversReachTheEndAndCompare) {
   o.time = 7.2;
   o.out = root / "cmp";
   o.quiet = true;
-  // The bound below was derived with the study's constant-h reading. The adaptive reading (the
-  // default) also makes the striker's sparse spray ahead of the remnant striker-dominated cells,
-  // and the centroid feature weights a cell by its total density, shield included: measured
-  // 4.452 cm adaptive, 4.516 constant, against 4.579 for the particles' own mass centroid and
-  // 4.561 for TVD. Until the feature weights by the striker's own share (docs/compare.md, open),
-  // this regression keeps the reading its bound was measured with.
-  o.sphReconstruction = SphReconstruction::Constant;
+  // The default (adaptive) reading: the centroid weighs the striker's own partial density
+  // (docs/compare.md), so the spray's reading no longer pulls it ahead (4.452 cm before, 4.512
+  // now, against 4.579 for the particles' own mass centroid and 4.565 for TVD).
   ASSERT_EQ(runCompareCommand(root / "sph", root / "tvd", o), 0);
   const auto j = readJson(root / "cmp" / "compare.json");
   const double cell = j["grid"]["dx"].get<double>();

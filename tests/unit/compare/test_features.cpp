@@ -70,6 +70,35 @@ TEST(Features, ParticleDebrisAxisymmetricWithinOneCell) {
   expectDebris(f, f.cellSize);
 }
 
+TEST(Features, StrikerCentroidCountsTheStrikersShareOfMixedCells) {
+  // The remnant plus a spray: inside the shield shell's lower band (7.1 <= z <= 7.2) every
+  // fourth lattice column is striker, so each resampled cell there is shield by majority but
+  // holds striker mass. The centroid is the striker's own mass centroid, spray included
+  // (docs/compare.md); weighting only striker-majority cells by their total density would leave
+  // the spray out and land at the remnant's 7.6, beyond this tolerance.
+  Scene2 s = debris();
+  const auto base = s.object;
+  constexpr double dx = 0.01;
+  s.object = [=](Vec2 p) {
+    const int col = static_cast<int>(std::floor(p.x / dx + 1000.0));
+    if (base(p) == 1 && p.z <= 7.2 && col % 4 == 0) return 0;
+    return base(p);
+  };
+  const Snapshot snap = test::lattice(s, -2.0, 2.0, 6.9, 8.3, dx);
+  const auto& m = snap.find("mass")->data;
+  const auto& obj = snap.find("object")->data;
+  double mass = 0.0, moment = 0.0;
+  for (std::size_t j = 0; j < m.size(); ++j)
+    if (std::lround(obj[j]) == 0) mass += m[j], moment += m[j] * snap.positions[j].z;
+  const double exact = moment / mass;
+  // The spray pulls the striker's centroid several cells below the remnant's (measured 7.541).
+  ASSERT_GT(kStrikerZ - exact, 4.0 * dx);
+  const Features f = measureFeatures(snap, config());
+  ASSERT_TRUE(f.strikerCentroidZ);
+  // Kernel interpolation moves mass by at most about one particle spacing.
+  EXPECT_NEAR(*f.strikerCentroidZ, exact, f.cellSize);
+}
+
 TEST(Features, GridDebrisWithinOneCellAtTvdResolution) {
   const GridSpec g{267, 100, 0.0, 6.8, 0.015, 0.015};
   const Snapshot s = test::gridOf(debris(), g, Geometry::Axisymmetric);

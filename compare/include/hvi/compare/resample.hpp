@@ -56,6 +56,13 @@ struct Resampled {
   std::vector<int> material;     //!< -1 vacuum, else index into materialNames
   std::vector<int> object;       //!< -1 vacuum or unknown, else index into objectNames
   bool hasObject = false;        //!< whether the source carried an "object" field
+  //! Each class's own partial density, g/cm^3, class-major: materialDensity[m * cells + c] (and
+  //! objectDensity likewise; empty without an "object" field). They add up to `density` where
+  //! all the mass belongs to some class. A mixed cell's majority class is its `material`/`object`;
+  //! these say how much of its mass each class holds (a particle source: kernel-weighted; a grid
+  //! source: by the source cells' classes, whose own mixed cells count for their majority).
+  std::vector<double> materialDensity;
+  std::vector<double> objectDensity;
   std::vector<std::string> materialNames;
   std::vector<std::string> objectNames;
 
