@@ -156,7 +156,8 @@ GridSpec cover(Box box, Geometry geom, const Snapshot* anchor, double d) {
   if (rz) g.x0 = std::max(g.x0, 0.0);
   const double cellsX = std::ceil((box.xmax - g.x0) / d - 1e-9);
   const double cellsZ = std::ceil((box.zmax - g.z0) / d - 1e-9);
-  // ~110 bytes per cell in a comparison (two resampled fields and the difference snapshot).
+  // ~110 bytes per cell in a comparison (two resampled fields and the difference snapshot), plus
+  // 16 per class (materials and objects: each side's partial densities).
   if (cellsX * cellsZ > 2.0e7)
     throw InputError(fmt::format("compare: a {} cm grid over [{}, {}] x [{}, {}] cm has {:.3g} "
                                  "cells; choose a coarser --spacing",
