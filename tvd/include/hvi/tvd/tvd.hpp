@@ -116,6 +116,10 @@ class TvdSolver final : public Solver {
   void setUpStrength(const cases::Scene& scene);
   void strengthStep(double dt);
   [[nodiscard]] double strengthShearModulus(double rho, double e, double p) const;
+  // The same with conservative interfaces (strength_cut.cpp): per solid phase, the cell's
+  // deviator the volume-fraction-weighted one; phase p's shear modulus at its own state.
+  void strengthStepCut(double dt);
+  [[nodiscard]] double phaseShearModulus(int p, double rho, double e, double pressure) const;
   // Body `body`'s initial state at the centre of `cell` (a radial velocity field sampled there).
   [[nodiscard]] Ownership::ObjectState stateAtCentre(const cases::Scene& scene, std::size_t body,
                                                      std::size_t cell) const;
