@@ -13,6 +13,7 @@
 #include "hvi/cases/effects.hpp"
 #include "hvi/common/error.hpp"
 #include "hvi/test/tvd_scenes.hpp"
+#include "hvi/test/two_wave.hpp"
 
 namespace hvi::tvd {
 namespace {
@@ -139,6 +140,72 @@ TEST(TvdStrengthCut, WeldedContactCarriesTheAcousticStress) {
     EXPECT_NEAR(c.velocity / uc, 1.0, 0.01);
     EXPECT_NEAR(a.velocity / uc, 1.0, 0.01);
   }
+}
+
+// Planar impact of two different elastic-perfectly plastic plates (200 m/s, an aluminium flyer
+// on a copper target, the welded bar above): each plate carries an elastic precursor at its own
+// Hugoniot elastic limit sigma_HEL = Y0 (1 - nu) / (1 - 2 nu), nu from K = rho0 c0^2 and G
+// (Meyers 1994, ch. 7), with the plastic wave behind it: the copper precursor runs into the
+// target, the aluminium one back into the flyer. Read as in
+// TvdStrength.ElasticPrecursorCarriesTheHugoniotElasticLimit (the shared two-wave reading, each
+// profile from its plate's far end); bound 3 %, the and that test's (the linear formula
+// leaves out the EOS's finite-strain terms).
+TEST(TvdStrengthCut, EachPlateCarriesItsOwnHugoniotElasticLimit) {
+  const double v0 = 0.02, dx = 0.01, width = 4 * dx;
+  const double yAl = 0.003, yCu = 0.002;
+  cases::Scene s = cutScene(0.0, width, -1.8, 2.2, dx);
+  s.domain.boundary = {cases::Boundary::Wall, cases::Boundary::Wall, cases::Boundary::Wall,
+                       cases::Boundary::Outflow};
+  const eos::Eos al = eos::aluminiumStudy();
+  const eos::Eos cu = eos::MieGruneisen{};
+  s.materials = {elastic("aluminium", al, kShearAl, 0.896e-5),
+                 elastic("copper", cu, kShearCu, 0.383e-5)};
+  s.materials[0].strength->yield = strength::ConstantYield{yAl};
+  s.materials[1].strength->yield = strength::ConstantYield{yCu};
+  s.bodies = {body("flyer", 0, cases::Rect{0.0, width, 0.0, 2.2}, {density(al), {0.0, -v0}, 0.0}),
+              body("target", 1, cases::Rect{0.0, width, -1.8, 0.0}, {density(cu), {}, 0.0})};
+  auto hel = [](const eos::Eos& e, double g, double y) {
+    const double c = soundSpeed(e), k = density(e) * c * c;
+    const double nu = (3.0 * k - 2.0 * g) / (2.0 * (3.0 * k + g));
+    return y * (1.0 - nu) / (1.0 - 2.0 * nu);
+  };
+  const double helAl = hel(al, kShearAl, yAl), helCu = hel(cu, kShearCu, yCu);
+  TvdSolver solver(s);
+  runTo(solver, 3.0);
+  const Snapshot snap = solver.snapshot();
+  const GridSpec& g = solver.grid();
+  const Field& p = field(snap, "pressure");
+  const Field& szz = field(snap, "stress_deviator_zz");
+  std::vector<double> zc, sc, za, sa;  // copper from its far end up, aluminium from its top down
+  for (int k = 0; k < g.nz; ++k) {
+    const double z = g.z0 + (k + 0.5) * g.dz;
+    double st = 0.0;
+    for (int i = 0; i < g.nx; ++i) {
+      const auto c = static_cast<std::size_t>(k) * g.nx + i;
+      st += (p.data[c] - szz.data[c]) / g.nx;
+    }
+    if (z < 0.0) {
+      zc.push_back(z);
+      sc.push_back(st);
+    } else {
+      za.insert(za.begin(), -z);
+      sa.insert(sa.begin(), st);
+    }
+  }
+  const hvi::test::TwoWave wc = hvi::test::twoWave(zc, sc, helCu);
+  const hvi::test::TwoWave wa = hvi::test::twoWave(za, sa, helAl);
+  std::printf(
+      "copper: HEL %.6f Mbar, plateau %.6f (%+.2f %%), peak %.5f, fronts %.3f / %.3f; "
+      "aluminium: HEL %.6f, plateau %.6f (%+.2f %%), peak %.5f, fronts %.3f / %.3f\n",
+      helCu, wc.plateau, 100.0 * (wc.plateau / helCu - 1.0), wc.peak, wc.zElastic, wc.zPlastic,
+      helAl, wa.plateau, 100.0 * (wa.plateau / helAl - 1.0), wa.peak, -wa.zElastic,
+      -wa.zPlastic);
+  EXPECT_NEAR(wc.plateau / helCu, 1.0, 0.03);
+  EXPECT_NEAR(wa.plateau / helAl, 1.0, 0.03);
+  EXPECT_GT(wc.peak, 2.0 * helCu);
+  EXPECT_GT(wa.peak, 2.0 * helAl);
+  EXPECT_GT(wc.zPlastic - wc.zElastic, 10.0 * dx);
+  EXPECT_GT(wa.zPlastic - wa.zElastic, 10.0 * dx);
 }
 
 // A 2 km/s copper block (Johnson-Cook OFHC copper) on a 6061-T6 plate (Steinberg-Guinan), walls
