@@ -10,12 +10,21 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "eos_line.hpp"
 #include "hvi/tvd/tvd.hpp"
 #include "strength_step.hpp"
 
 namespace hvi::tvd {
+
+std::vector<double>& TvdSolver::phaseStrengthStateForTesting(int p, int k) {
+  if (!strength_ || p < 0 || p >= static_cast<int>(strength_->phases.size()) ||
+      !strength_->phases[static_cast<std::size_t>(p)].solid || k < 0 ||
+      k >= detail::kStrengthFields)
+    throw std::logic_error(fmt::format("tvd: no strength state of phase {} component {}", p, k));
+  return strength_->phases[static_cast<std::size_t>(p)].rq[static_cast<std::size_t>(k)];
+}
 
 double TvdSolver::phaseShearModulus(int p, double rho, double e, double pressure) const {
   const detail::StrengthState::Phase& ph = strength_->phases[static_cast<std::size_t>(p)];

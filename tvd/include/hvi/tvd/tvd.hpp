@@ -86,6 +86,9 @@ class TvdSolver final : public Solver {
   //! 2: s_xz, 3: the equivalent plastic strain), for tests that set up a state the scene cannot
   //! express. Throws std::logic_error without the effect.
   std::vector<double>& strengthStateForTesting(int k);
+  //! The same per phase p of the conservative interfaces (rho_p times the component per unit
+  //! cell volume). Throws std::logic_error without the effect or for a fluid phase.
+  std::vector<double>& phaseStrengthStateForTesting(int p, int k);
   //! Largest stable step of the current state, us.
   [[nodiscard]] double stableTimeStep() const;
   //! Cells whose owner changed since the start (markers only).
