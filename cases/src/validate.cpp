@@ -196,8 +196,7 @@ void checkStrength(const TableReader& root, const Scene& scene) {
   // TVD carries the deviator per phase in the conservative interface mode; the study's
   // whole-cell mode has none (docs/strength.md, "TVD with interfaces").
   if (scene.solver == SolverKind::Tvd && scene.has(Effect::Strength) &&
-      scene.has(Effect::MaterialInterfaces) &&
-      scene.tvd.interfaces == InterfaceMode::WholeCell)
+      scene.has(Effect::MaterialInterfaces) && scene.tvd.interfaces == InterfaceMode::WholeCell)
     root.fail("effects",
               "the TVD solver runs \"strength\" with \"material_interfaces\" in the "
               "conservative interface mode only (the deviator is carried per phase; the "

@@ -71,8 +71,7 @@ double TvdSolver::signalSpeedCut(double* vx, double* vz, long* worstCell) const 
                 s = detail::cellState(eos, r, q.mx[cc] / a, q.mz[cc] / a, q.E[cc] / a);
                 // Strength: a solid phase's longitudinal wave c_L = sqrt(c^2 + 4G / (3 rho)).
                 if (solid)
-                  s.c = strength::longitudinalSoundSpeed(s.c, phaseShearModulus(p, r, s.e, s.p),
-                                                         r);
+                  s.c = strength::longitudinalSoundSpeed(s.c, phaseShearModulus(p, r, s.e, s.p), r);
                 return 1;
               });
           if (found) badPhase = p;

@@ -40,9 +40,9 @@ void advectStrengthLine(StrengthState& st, StrengthLineWork& sw, const double* r
   advectStrengthLine(st.rq, sw, rhoNew, invVol, n, edgeMassLow, rhoCut);
 }
 
-void advectStrengthLine(std::array<std::vector<double>, kStrengthFields>& rqs,
-                        StrengthLineWork& sw, const double* rhoNew, const double* invVol, int n,
-                        double edgeMassLow, double rhoCut) {
+void advectStrengthLine(std::array<std::vector<double>, kStrengthFields>& rqs, StrengthLineWork& sw,
+                        const double* rhoNew, const double* invVol, int n, double edgeMassLow,
+                        double rhoCut) {
   const long* cells = sw.cells.data();
   double* G = sw.massFlux.data();  // G[f]: face f between buffer cells f and f+1
   G[1] = edgeMassLow;

@@ -74,8 +74,8 @@ void advectStrengthLine(StrengthState& st, StrengthLineWork& sw, const double* r
                         const double* invVol, int n, double edgeMassLow, double rhoCut);
 //! The same for the given arrays `rq` (a phase's, in the cut-cell mode: `rhoOld` and `rhoNew`
 //! are then that phase's mass per unit cell volume before and after the sweep).
-void advectStrengthLine(std::array<std::vector<double>, kStrengthFields>& rq,
-                        StrengthLineWork& sw, const double* rhoNew, const double* invVol, int n,
-                        double edgeMassLow, double rhoCut);
+void advectStrengthLine(std::array<std::vector<double>, kStrengthFields>& rq, StrengthLineWork& sw,
+                        const double* rhoNew, const double* invVol, int n, double edgeMassLow,
+                        double rhoCut);
 
 }  // namespace hvi::tvd::detail

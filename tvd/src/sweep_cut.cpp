@@ -181,7 +181,8 @@ void TvdSolver::sweepCut(int direction, double dt) {
       // Effect strength: each solid phase's mass before the sweep, for its state's advection.
       const bool carry = strength_ && !strength_->phases.empty();
       if (carry) {
-        for (int j = 2; j <= n + 1; ++j) ws.strength->cells[static_cast<std::size_t>(j)] = at(a - 2 + j);
+        for (int j = 2; j <= n + 1; ++j)
+          ws.strength->cells[static_cast<std::size_t>(j)] = at(a - 2 + j);
         for (int p = 0; p < P; ++p) {
           detail::PhaseLine& ph = W.phase[static_cast<std::size_t>(p)];
           if (ph.active && strength_->phases[static_cast<std::size_t>(p)].solid)

@@ -34,8 +34,7 @@ cases::Material elastic(std::string name, eos::Eos e, double shear, double cv) {
 }
 
 double soundSpeed(const eos::Eos& e) {
-  return std::visit(
-      [](const auto& x) { return x.state(x.referenceDensity(), 0.0).soundSpeed; }, e);
+  return std::visit([](const auto& x) { return x.state(x.referenceDensity(), 0.0).soundSpeed; }, e);
 }
 double density(const eos::Eos& e) { return eos::referenceDensity(e); }
 
@@ -118,10 +117,10 @@ TEST(TvdStrengthCut, WeldedContactCarriesTheAcousticStress) {
   const eos::Eos al = eos::aluminiumStudy();
   const eos::Eos cu = eos::MieGruneisen{};
   for (const bool strong : {true, false}) {
-    const double cLa = strength::longitudinalSoundSpeed(soundSpeed(al), strong ? kShearAl : 0.0,
-                                                        density(al));
-    const double cLc = strength::longitudinalSoundSpeed(soundSpeed(cu), strong ? kShearCu : 0.0,
-                                                        density(cu));
+    const double cLa =
+        strength::longitudinalSoundSpeed(soundSpeed(al), strong ? kShearAl : 0.0, density(al));
+    const double cLc =
+        strength::longitudinalSoundSpeed(soundSpeed(cu), strong ? kShearCu : 0.0, density(cu));
     const double za = density(al) * cLa, zc = density(cu) * cLc;
     const double sigma = za * zc * v0 / (za + zc), uc = za * v0 / (za + zc);
     TvdSolver solver(weldedBar(strong, v0));
@@ -133,8 +132,8 @@ TEST(TvdStrengthCut, WeldedContactCarriesTheAcousticStress) {
         "%s: sigma = %.5e Mbar, u_c = %.5e cm/us; copper %.5e (%+.2f %%), %.5e (%+.2f %%); "
         "aluminium %.5e (%+.2f %%), flyer velocity %.5e (exact %.5e)\n",
         strong ? "strength" : "hydro", sigma, uc, c.stress, 100.0 * (c.stress / sigma - 1.0),
-        c.velocity, 100.0 * (c.velocity / uc - 1.0), a.stress,
-        100.0 * (a.stress / sigma - 1.0), a.velocity, uc);
+        c.velocity, 100.0 * (c.velocity / uc - 1.0), a.stress, 100.0 * (a.stress / sigma - 1.0),
+        a.velocity, uc);
     EXPECT_NEAR(c.stress / sigma, 1.0, 0.01);
     EXPECT_NEAR(a.stress / sigma, 1.0, 0.01);
     EXPECT_NEAR(c.velocity / uc, 1.0, 0.01);
@@ -198,8 +197,7 @@ TEST(TvdStrengthCut, EachPlateCarriesItsOwnHugoniotElasticLimit) {
       "copper: HEL %.6f Mbar, plateau %.6f (%+.2f %%), peak %.5f, fronts %.3f / %.3f; "
       "aluminium: HEL %.6f, plateau %.6f (%+.2f %%), peak %.5f, fronts %.3f / %.3f\n",
       helCu, wc.plateau, 100.0 * (wc.plateau / helCu - 1.0), wc.peak, wc.zElastic, wc.zPlastic,
-      helAl, wa.plateau, 100.0 * (wa.plateau / helAl - 1.0), wa.peak, -wa.zElastic,
-      -wa.zPlastic);
+      helAl, wa.plateau, 100.0 * (wa.plateau / helAl - 1.0), wa.peak, -wa.zElastic, -wa.zPlastic);
   EXPECT_NEAR(wc.plateau / helCu, 1.0, 0.03);
   EXPECT_NEAR(wa.plateau / helAl, 1.0, 0.03);
   EXPECT_GT(wc.peak, 2.0 * helCu);
@@ -281,7 +279,7 @@ void checkEnergy(Geometry g, bool open = false) {
     EXPECT_EQ(solver.ledger().boundary.energy, 0.0);
   }
   for (std::size_t p = 0; p < m0.size() && !open; ++p) EXPECT_NEAR(m1[p], m0[p], 1e-12 * m0[p]);
-  EXPECT_GT(epsMax, 0.05);     // the plastic return is exercised
+  EXPECT_GT(epsMax, 0.05);      // the plastic return is exercised
   EXPECT_GT(epsStriker, 0.05);  // in both phases
   if (g == Geometry::Planar) {
     const double scale = t0.mass * 0.2;
@@ -333,8 +331,8 @@ TEST(TvdStrengthCut, StrengthStateMovesWithItsPhase) {
   cases::Scene s = cutScene(-0.6, 1.4, -0.6, 1.0, h);
   const eos::Eos al = eos::aluminiumStudy();
   s.materials = {elastic("aluminium", al, kShearAl, 0.896e-5)};
-  s.bodies = {body("block", 0, cases::Rect{-0.413, 0.437, -0.387, 0.463},
-                   {density(al), {vx, vz}, 0.0})};
+  s.bodies = {
+      body("block", 0, cases::Rect{-0.413, 0.437, -0.387, 0.463}, {density(al), {vx, vz}, 0.0})};
   TvdSolver solver(s);
   const GridSpec& g = solver.grid();
   std::vector<double>& eps = solver.phaseStrengthStateForTesting(0, 3);
