@@ -193,15 +193,16 @@ void checkStrength(const TableReader& root, const Scene& scene) {
   if (scene.has(Effect::Strength) && !any)
     root.fail("effects", "\"strength\" is named but no material has a strength table",
               "[materials.<name>.strength] for the solids");
-  // TVD carries the deviator for one material without marker lines only (docs/strength.md,
-  // "TVD with strength"; the stress per phase with interfaces is open).
+  // TVD carries the deviator per phase in the conservative interface mode; the study's
+  // whole-cell mode has none (docs/strength.md, "TVD with interfaces").
   if (scene.solver == SolverKind::Tvd && scene.has(Effect::Strength) &&
-      scene.has(Effect::MaterialInterfaces))
+      scene.has(Effect::MaterialInterfaces) && scene.tvd.interfaces == InterfaceMode::WholeCell)
     root.fail("effects",
-              "the TVD solver runs \"strength\" without \"material_interfaces\" only (one "
-              "material, no marker lines; the deviator per phase at interfaces is not built)",
-              "effects without \"material_interfaces\" and one material for every body, or "
-              "solver = \"sph\"");
+              "the TVD solver runs \"strength\" with \"material_interfaces\" in the "
+              "conservative interface mode only (the deviator is carried per phase; the "
+              "study's whole-cell interfaces have no strength)",
+              "tvd.interfaces = \"conservative\" (the default), or effects without "
+              "\"strength\"");
 }
 
 void checkRiemann(const TableReader& root, const Scene& scene, const Sources& src, double tol) {

@@ -119,9 +119,13 @@ std::string sceneToml(const ShieldSpec& s) {
       "# Layout (cm): spacing {:.6g} = min(d / {:g}, thinnest wall / {:g}); plates of radius "
       "{:.6g}; {:.6g} behind the rear wall; end time 2 S / V + 10 t_w / (0.5 cm/us).\n",
       h, s.resolution.cellsAcrossProjectile, s.resolution.cellsAcrossThinnestWall, radius, behind);
+  const bool withFracture =
+      std::find(strength.begin(), strength.end(), "fracture") != strength.end();
   out += fmt::format("# Strength and fracture: {}.\n",
                      strength.empty() ? "not available in this build (hydrodynamic plates)"
-                                      : "on for every plate and the projectile");
+                     : withFracture   ? "on for every plate and the projectile"
+                                      : "strength on for every plate and the projectile; no "
+                                        "fracture in this solver (the zero tension cut-off)");
   out += fmt::format("title = \"{} - d = {:.4g} cm at {:.4g} km/s ({})\"\n", s.title, d,
                      s.projectile.speed, cases::toString(s.solver));
   out += "geometry = \"rz\"\n";

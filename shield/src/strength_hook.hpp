@@ -10,11 +10,11 @@
 namespace hvi::shield::detail {
 
 //! The effects `strength` and `fracture`, each when the effect table knows it and `solver`
-//! supports it. Until issue 15 is merged neither exists and shield scenes are hydrodynamic.
+//! supports it (SPH: both; TVD: strength alone).
 std::vector<std::string> strengthEffects(cases::SolverKind solver);
 
 //! Lines added to [materials.<name>] of `m` when strength is on: the material's strength and
-//! fracture parameters in the keys issue 15 defines. Empty today (see the .cpp).
+//! fracture parameters in the keys issue 15 defines (the spall strength is read by fracture only).
 std::string strengthMaterialKeys(const ShieldMaterial& m, bool strengthOn);
 
 }  // namespace hvi::shield::detail

@@ -78,8 +78,13 @@ void TvdSolver::writeCheckpoint(std::ostream& out) const {
       w.array(phases_.alpha[static_cast<std::size_t>(p)]);
     }
   }
-  if (strength_)
+  if (strength_ && cut_) {  // each solid phase's rho_p q (its strength state)
+    for (const auto& ph : strength_->phases)
+      if (ph.solid)
+        for (const auto& a : ph.rq) w.array(a);
+  } else if (strength_) {
     for (const auto& a : strength_->rq) w.array(a);
+  }
 }
 
 void TvdSolver::readCheckpoint(std::istream& in) {
@@ -151,10 +156,21 @@ void TvdSolver::readCheckpoint(std::istream& in) {
   if (strength_) {
     const char* names[detail::kStrengthFields] = {"rho s_xx", "rho s_zz", "rho s_xz",
                                                   "rho plastic strain"};
-    std::array<std::vector<double>, detail::kStrengthFields> rq;
-    for (int k = 0; k < detail::kStrengthFields; ++k)
-      r.array(rq[static_cast<std::size_t>(k)], n, names[k]);
-    strength_->rq = std::move(rq);
+    if (cut_) {
+      // In place: Phases::carried points at these arrays.
+      for (auto& ph : strength_->phases)
+        if (ph.solid)
+          for (int k = 0; k < detail::kStrengthFields; ++k) {
+            std::vector<double> a;
+            r.array(a, n, std::string("phase ") + names[k]);
+            ph.rq[static_cast<std::size_t>(k)] = std::move(a);
+          }
+    } else {
+      std::array<std::vector<double>, detail::kStrengthFields> rq;
+      for (int k = 0; k < detail::kStrengthFields; ++k)
+        r.array(rq[static_cast<std::size_t>(k)], n, names[k]);
+      strength_->rq = std::move(rq);
+    }
   }
   U_ = std::move(U);
   time_ = t;

@@ -9,6 +9,7 @@
 #include "hvi/common/error.hpp"
 #include "hvi/tvd/tvd.hpp"
 #include "signal_speed.hpp"
+#include "strength_step.hpp"
 
 namespace hvi::tvd {
 
@@ -55,6 +56,7 @@ double TvdSolver::signalSpeedCut(double* vx, double* vz, long* worstCell) const 
     const auto& alpha = phases_.alpha[static_cast<std::size_t>(p)];
     const Conserved& q = phases_.q[static_cast<std::size_t>(p)];
     const double rhoStep = rhoStep_[static_cast<std::size_t>(p)];
+    const bool solid = strength_ && strength_->phases[static_cast<std::size_t>(p)].solid;
     std::visit(
         [&](const auto& eos) {
           const bool found =
@@ -67,6 +69,9 @@ double TvdSolver::signalSpeedCut(double* vx, double* vz, long* worstCell) const 
                 if (!(r > 0.0)) return -1;
                 if (r < rhoStep) return 0;  // below the time-step density: not in the CFL
                 s = detail::cellState(eos, r, q.mx[cc] / a, q.mz[cc] / a, q.E[cc] / a);
+                // Strength: a solid phase's longitudinal wave c_L = sqrt(c^2 + 4G / (3 rho)).
+                if (solid)
+                  s.c = strength::longitudinalSoundSpeed(s.c, phaseShearModulus(p, r, s.e, s.p), r);
                 return 1;
               });
           if (found) badPhase = p;

@@ -70,6 +70,7 @@ class CutLineSolver {
   void prepare() {
     for (auto& ph : W_.phase) {
       if (!ph.active) continue;
+      ph.edgeMass = 0.0;
       ph.lo = n_ + 4;
       ph.hi = -1;
       for (int j = 0; j < n_ + 4; ++j) {
@@ -640,11 +641,12 @@ class CutLineSolver {
     }
   }
 
-  void ledgerFaces(const PhaseLine& ph) {
+  void ledgerFaces(PhaseLine& ph) {
     const double h = 0.5 * C_.dt;
     if (L_.leftEdge) {
       const double s = h * W_.area[1] * ph.ap[1];
       const double* F = ph.flux[1].data();
+      ph.edgeMass += s * F[kRho];
       B_.edge[0].add(s * F[kRho], s * F[kMn], s * F[kMt], s * F[kE], C_.axis);
     }
     if (L_.rightEdge) {

@@ -35,6 +35,11 @@ struct PhaseLine {
   std::vector<std::array<double, kFields>> g;
   std::vector<unsigned char> fallback;
   std::vector<double> pface;
+  // Effect strength: the phase's mass per unit cell volume before the sweep (buffer positions
+  // 2..n+1), and the mass that came in through face 1 when it is the domain's low edge; the
+  // strength state's advection takes the phase's mass fluxes from them (strength_step.hpp).
+  std::vector<double> massOld;
+  double edgeMass = 0.0;
 };
 
 //! All phases of one line, plus the line's geometry (as LineWork).

@@ -85,7 +85,24 @@ Snapshot TvdSolver::snapshot() const {
     std::vector<double> sxx(n, 0.0), szz(n, 0.0), sxz(n, 0.0), stt(n, 0.0), eps(n, 0.0),
         temp(n, 0.0);
     const double rc = rhoCut_[static_cast<std::size_t>(singleMaterial_)];
-    for (std::size_t c = 0; c < n; ++c) {
+    // Conservative interfaces: the owning phase's own values (as the other fields report its own
+    // state on its part of the cell).
+    for (std::size_t c = 0; cut_ && c < n; ++c) {
+      const int o = ownership_.owner()[c];
+      if (o < 0) continue;
+      const auto& ph = st.phases[static_cast<std::size_t>(o)];
+      const Conserved& q = phases_.q[static_cast<std::size_t>(o)];
+      const double m = q.rho[c], a = phases_.alpha[static_cast<std::size_t>(o)][c];
+      if (!ph.solid || !(m > 0.0) || !(a >= kPhaseAbsent)) continue;
+      sxx[c] = ph.rq[detail::kSxx][c] / m;
+      szz[c] = ph.rq[detail::kSzz][c] / m;
+      sxz[c] = ph.rq[detail::kSxz][c] / m;
+      stt[c] = -(sxx[c] + szz[c]);
+      eps[c] = ph.rq[detail::kEps][c] / m;
+      const double es = (q.E[c] - 0.5 * (q.mx[c] * q.mx[c] + q.mz[c] * q.mz[c]) / m) / m;
+      temp[c] = ph.material.thermal.temperature(m / a / ph.rho0, es);
+    }
+    for (std::size_t c = 0; !cut_ && c < n; ++c) {
       const double r = U_.rho[c];
       if (!(r >= rc)) continue;
       sxx[c] = st.rq[detail::kSxx][c] / r;

@@ -16,7 +16,8 @@ PhaseLine::PhaseLine(int capacity) {
   const auto nb = static_cast<std::size_t>(capacity) + 4;
   for (auto* a : {&q0, &q1, &w, &ex, &U})
     for (auto& v : *a) v.assign(nb, 0.0);
-  for (auto* v : {&alpha, &vol0, &vol1, &volW, &gm, &gp, &ap, &uL, &uR, &It, &sqrtRho, &pface})
+  for (auto* v :
+       {&alpha, &vol0, &vol1, &volW, &gm, &gp, &ap, &uL, &uR, &It, &sqrtRho, &pface, &massOld})
     v->assign(nb, 0.0);
   present.assign(nb, 0);
   dry.assign(nb, 0);
@@ -264,6 +265,13 @@ void Phases::settle(const CellVolumes& volumes, int p) {
         v[c] += moved / vc;
         v[d] -= moved / vd;
       }
+      if (static_cast<std::size_t>(p) < carried.size())
+        for (std::vector<double>* a : carried[static_cast<std::size_t>(p)]) {
+          double* v = a->data();
+          const double moved = f * v[d] * vd;
+          v[c] += moved / vc;
+          v[d] -= moved / vd;
+        }
       w[c] += take / vc;
       w[d] -= take / vd;
     }
@@ -326,6 +334,14 @@ long Phases::repair(const CellVolumes& volumes, const std::vector<std::vector<do
         v[cc] = a[cc] * u;
         v[d] = a[d] * u;
       }
+      if (static_cast<std::size_t>(p) < carried.size())
+        for (std::vector<double>* e : carried[static_cast<std::size_t>(p)]) {
+          double* v = e->data();
+          const double total = v[cc] * vc + v[d] * vd;
+          const double u = total / pooled;
+          v[cc] = a[cc] * u;
+          v[d] = a[d] * u;
+        }
     }
   }
   return orphans;

@@ -247,7 +247,12 @@ double TvdSolver::advance(double tStop) {
     sweep(1, dt);
     sweep(0, dt);
   }
-  if (strength_) strengthStep(dt);
+  if (strength_) {
+    if (cut_)
+      strengthStepCut(dt);
+    else
+      strengthStep(dt);
+  }
   if (markersOn_ && !cut_) ownership_.update(U_, dt, ledger_.ownerChanges);
   time_ = last ? tStop : time_ + dt;
   ++step_;

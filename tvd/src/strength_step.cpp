@@ -37,13 +37,19 @@ void advectStrengthLine(StrengthState& st, StrengthLineWork& sw, const LineWork&
 
 void advectStrengthLine(StrengthState& st, StrengthLineWork& sw, const double* rhoNew,
                         const double* invVol, int n, double edgeMassLow, double rhoCut) {
+  advectStrengthLine(st.rq, sw, rhoNew, invVol, n, edgeMassLow, rhoCut);
+}
+
+void advectStrengthLine(std::array<std::vector<double>, kStrengthFields>& rqs, StrengthLineWork& sw,
+                        const double* rhoNew, const double* invVol, int n, double edgeMassLow,
+                        double rhoCut) {
   const long* cells = sw.cells.data();
   double* G = sw.massFlux.data();  // G[f]: face f between buffer cells f and f+1
   G[1] = edgeMassLow;
   for (int j = 2; j <= n + 1; ++j)
     G[j] = G[j - 1] - (rhoNew[j] - sw.rhoOld[static_cast<std::size_t>(j)]) / invVol[j];
   double* q = sw.q.data();
-  for (auto& rq : st.rq) {
+  for (auto& rq : rqs) {
     for (int j = 2; j <= n + 1; ++j) {
       const double r = sw.rhoOld[static_cast<std::size_t>(j)];
       q[j] = r >= rhoCut ? rq[static_cast<std::size_t>(cells[j])] / r : 0.0;
@@ -84,12 +90,42 @@ void TvdSolver::setUpStrength(const cases::Scene& scene) {
         "tvd: effect 'fracture' is not implemented in the TVD solver (docs/strength.md, TVD, "
         "open); it runs with 'strength' alone");
   if (!scene.has(cases::Effect::Strength)) return;
-  if (markersOn_)
-    throw InputError(fmt::format(
-        "tvd: effect 'strength' with 'material_interfaces' ({} interfaces) is not implemented "
-        "(docs/strength.md, TVD, open): a TVD strength scene has one material and no marker "
-        "lines",
-        cut_ ? "conservative" : "whole_cell"));
+  if (markersOn_ && !cut_)
+    throw InputError(
+        "tvd: effect 'strength' with 'material_interfaces' runs with tvd.interfaces = "
+        "\"conservative\" only (the deviator is carried per phase); the study's "
+        "\"whole_cell\" interfaces have no strength (docs/strength.md, \"TVD with interfaces\")");
+  if (cut_) {
+    // One phase per body (materials_): each solid phase carries its own state.
+    auto st = std::make_unique<detail::StrengthState>();
+    const auto n = static_cast<std::size_t>(grid_.cells());
+    st->phases.resize(materials_.size());
+    bool anySolid = false;
+    for (std::size_t p = 0; p < materials_.size(); ++p) {
+      detail::StrengthState::Phase& ph = st->phases[p];
+      ph.solid = materials_[p].strength.has_value();
+      ph.rho0 = materials_[p].rho0();
+      if (!ph.solid) continue;
+      anySolid = true;
+      ph.material = *materials_[p].strength;
+      for (auto& a : ph.rq) a.assign(n, 0.0);  // bodies start unstressed
+    }
+    st->solid = anySolid;
+    st->u.assign(n, 0.0);
+    st->w.assign(n, 0.0);
+    st->live.assign(n, 0);
+    for (auto& a : st->s) a.assign(n, 0.0);
+    for (auto& a : st->grad) a.assign(n, 0.0);
+    strength_ = std::move(st);
+    // The repair moves each phase's strength state with its mass (Phases::carried).
+    phases_.carried.assign(materials_.size(), {});
+    for (std::size_t p = 0; p < materials_.size(); ++p)
+      if (strength_->phases[p].solid)
+        for (auto& a : strength_->phases[p].rq) phases_.carried[p].push_back(&a);
+    for (auto& w : work_)
+      w->strength = std::make_unique<detail::StrengthLineWork>(std::max(grid_.nx, grid_.nz));
+    return;
+  }
   auto st = std::make_unique<detail::StrengthState>();
   const cases::Material& m = materials_[static_cast<std::size_t>(singleMaterial_)];
   st->solid = m.strength.has_value();

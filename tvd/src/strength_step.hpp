@@ -25,6 +25,19 @@ struct StrengthState {
   std::vector<double> u, w;
   std::vector<unsigned char> live;
   std::array<std::vector<double>, 3> s;
+  //! Conservative interfaces (docs/strength.md, "TVD with interfaces"): per phase (body) its
+  //! strength table and rho_p q per unit CELL volume (the phase's mass in the cell times q, as
+  //! the phase's conserved state), empty for a fluid phase; `rq` above is then unused, and `s`
+  //! holds the cell's volume-fraction-weighted deviator.
+  struct Phase {
+    strength::Material material;
+    bool solid = false;
+    double rho0 = 0.0;
+    std::array<std::vector<double>, kStrengthFields> rq;
+  };
+  std::vector<Phase> phases;
+  //! Cut-cell scratch: the cell's velocity gradient (dvx/dx, dvx/dz, dvz/dx, dvz/dz, hoop).
+  std::array<std::vector<double>, 5> grad;
 };
 
 //! Per-thread scratch of the advection along one line.
@@ -59,5 +72,10 @@ void advectStrengthLine(StrengthState& st, StrengthLineWork& sw, const LineWork&
 //! (positions 2..n+1): a lane of the four-line batches.
 void advectStrengthLine(StrengthState& st, StrengthLineWork& sw, const double* rhoNew,
                         const double* invVol, int n, double edgeMassLow, double rhoCut);
+//! The same for the given arrays `rq` (a phase's, in the cut-cell mode: `rhoOld` and `rhoNew`
+//! are then that phase's mass per unit cell volume before and after the sweep).
+void advectStrengthLine(std::array<std::vector<double>, kStrengthFields>& rq, StrengthLineWork& sw,
+                        const double* rhoNew, const double* invVol, int n, double edgeMassLow,
+                        double rhoCut);
 
 }  // namespace hvi::tvd::detail

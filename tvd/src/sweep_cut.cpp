@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "cut_kernel.hpp"
@@ -177,6 +178,18 @@ void TvdSolver::sweepCut(int direction, double dt) {
 
       detail::LineBudget lb;
       detail::LineFailure fail;
+      // Effect strength: each solid phase's mass before the sweep, for its state's advection.
+      const bool carry = strength_ && !strength_->phases.empty();
+      if (carry) {
+        for (int j = 2; j <= n + 1; ++j)
+          ws.strength->cells[static_cast<std::size_t>(j)] = at(a - 2 + j);
+        for (int p = 0; p < P; ++p) {
+          detail::PhaseLine& ph = W.phase[static_cast<std::size_t>(p)];
+          if (ph.active && strength_->phases[static_cast<std::size_t>(p)].solid)
+            std::copy(ph.q0[detail::kRho].begin() + 2, ph.q0[detail::kRho].begin() + n + 2,
+                      ph.massOld.begin() + 2);
+        }
+      }
       if (!fn(W, setup, ctx, lb, fail)) {
         ws.fail(line, detail::failureMessage(step_, xdir, dt, a, line, grid_, fail));
         continue;
@@ -192,6 +205,16 @@ void TvdSolver::sweepCut(int direction, double dt) {
           const long c = at(a - 2 + j);
           for (int k = 0; k < 4; ++k) arrays[k][c] = ph.q0[k][j];
           volume[c] = ph.vol0[j];
+        }
+        // docs/strength.md, "TVD with interfaces": the phase's strength state moves with the
+        // phase's own mass fluxes (every mass change of the kernel is between cells of the line).
+        if (carry && strength_->phases[static_cast<std::size_t>(p)].solid) {
+          detail::StrengthLineWork& S = *ws.strength;
+          std::copy(ph.massOld.begin() + 2, ph.massOld.begin() + n + 2, S.rhoOld.begin() + 2);
+          detail::advectStrengthLine(strength_->phases[static_cast<std::size_t>(p)].rq, S,
+                                     ph.q0[detail::kRho].data(), W.invVol.data(), n,
+                                     setup.leftEdge ? ph.edgeMass : 0.0,
+                                     std::numeric_limits<double>::min());
         }
       }
       rec.floors = lb.floors.scaled(lineScale);

@@ -26,6 +26,10 @@ struct Phases {
   GridSpec grid;
   std::vector<Conserved> q;
   std::vector<std::vector<double>> alpha;
+  //! Further per-unit-cell-volume quantities of each phase that move with its mass wherever
+  //! the repair moves it (effect strength: rho_p times the deviator and the plastic strain,
+  //! docs/strength.md "TVD with interfaces"); carried[p] may be empty. Not owned.
+  std::vector<std::vector<std::vector<double>*>> carried;
   //! Working fractions within a step: alpha at its start, then moved by each sweep with the
   //! phases' velocities (docs/tvd.md); the marker lines give alpha again after the step.
   std::vector<std::vector<double>> volume;

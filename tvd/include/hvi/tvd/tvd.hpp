@@ -86,6 +86,9 @@ class TvdSolver final : public Solver {
   //! 2: s_xz, 3: the equivalent plastic strain), for tests that set up a state the scene cannot
   //! express. Throws std::logic_error without the effect.
   std::vector<double>& strengthStateForTesting(int k);
+  //! The same per phase p of the conservative interfaces (rho_p times the component per unit
+  //! cell volume). Throws std::logic_error without the effect or for a fluid phase.
+  std::vector<double>& phaseStrengthStateForTesting(int p, int k);
   //! Largest stable step of the current state, us.
   [[nodiscard]] double stableTimeStep() const;
   //! Cells whose owner changed since the start (markers only).
@@ -116,6 +119,10 @@ class TvdSolver final : public Solver {
   void setUpStrength(const cases::Scene& scene);
   void strengthStep(double dt);
   [[nodiscard]] double strengthShearModulus(double rho, double e, double p) const;
+  // The same with conservative interfaces (strength_cut.cpp): per solid phase, the cell's
+  // deviator the volume-fraction-weighted one; phase p's shear modulus at its own state.
+  void strengthStepCut(double dt);
+  [[nodiscard]] double phaseShearModulus(int p, double rho, double e, double pressure) const;
   // Body `body`'s initial state at the centre of `cell` (a radial velocity field sampled there).
   [[nodiscard]] Ownership::ObjectState stateAtCentre(const cases::Scene& scene, std::size_t body,
                                                      std::size_t cell) const;

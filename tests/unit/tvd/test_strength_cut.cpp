@@ -1,0 +1,412 @@
+//! @file TVD strength with conservative interfaces (docs/strength.md, "TVD with interfaces"):
+//! the elastic stress across a welded contact of two materials against acoustics, energy and
+//! every phase's mass with interfaces, restart, and the modes that stay refused.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "hvi/cases/effects.hpp"
+#include "hvi/common/error.hpp"
+#include "hvi/test/tvd_scenes.hpp"
+#include "hvi/test/two_wave.hpp"
+
+namespace hvi::tvd {
+namespace {
+using namespace hvi::tvd::testing;
+using cases::Effect;
+
+// Elastic solids: a yield far above any stress here (1 Mbar), shear moduli of 6061-T6
+// (27.6 GPa, Steinberg 1991) and OFHC copper (46 GPa, the copper_ofhc preset).
+constexpr double kShearAl = 0.276, kShearCu = 0.46;  // Mbar
+cases::Material elastic(std::string name, eos::Eos e, double shear, double cv) {
+  cases::Material m = material(std::move(name), std::move(e));
+  strength::Material sm;
+  sm.shearModulus = shear;
+  sm.yield = strength::ConstantYield{1.0};
+  sm.thermal.cv = cv;
+  m.strength = sm;
+  return m;
+}
+
+double soundSpeed(const eos::Eos& e) {
+  return std::visit([](const auto& x) { return x.state(x.referenceDensity(), 0.0).soundSpeed; }, e);
+}
+double density(const eos::Eos& e) { return eos::referenceDensity(e); }
+
+const Field& field(const Snapshot& s, const std::string& name) {
+  for (const Field& f : s.fields)
+    if (f.name == name) return f;
+  throw std::runtime_error("no field " + name);
+}
+
+cases::Scene cutScene(double xmin, double xmax, double zmin, double zmax, double h,
+                      Geometry g = Geometry::Planar) {
+  cases::Scene s = baseScene(xmin, xmax, zmin, zmax, h, g);
+  s.effects.insert(Effect::MaterialInterfaces);
+  s.effects.insert(Effect::TensionCutoff);
+  s.effects.insert(Effect::Strength);
+  s.tvd.interfaces = cases::InterfaceMode::Conservative;
+  return s;
+}
+
+// Uniaxial strain across a welded contact of two materials: an aluminium flyer (z > 0, long,
+// continued by an outflow side) moving at -v0 hits a copper target (z < 0) at rest, both
+// elastic; walls at x (plane strain, laterally confined) and at the target's far end. Linear
+// acoustics (Meyers, Dynamic behavior of materials, 1994, ch. 2; the transmission of a stress
+// wave across an interface, sigma_T / sigma_I = 2 Z2 / (Z1 + Z2)) gives on both sides of the
+// contact one longitudinal stress and one velocity,
+//     sigma = Z_a Z_c v0 / (Z_a + Z_c),   u_c = Z_a v0 / (Z_a + Z_c),
+// with the longitudinal impedances Z = rho0 c_L, c_L = sqrt(c0^2 + 4G / (3 rho0)).
+cases::Scene weldedBar(bool withStrength, double v0) {
+  const double dx = 0.01, width = 4 * dx;
+  cases::Scene s = cutScene(0.0, width, -1.0, 1.0, dx);
+  if (!withStrength) s.effects.erase(Effect::Strength);
+  s.domain.boundary = {cases::Boundary::Wall, cases::Boundary::Wall, cases::Boundary::Wall,
+                       cases::Boundary::Outflow};
+  const eos::Eos al = eos::aluminiumStudy();
+  const eos::Eos cu = eos::MieGruneisen{};
+  s.materials = {elastic("aluminium", al, kShearAl, 0.896e-5),
+                 elastic("copper", cu, kShearCu, 0.383e-5)};
+  if (!withStrength)
+    for (auto& m : s.materials) m.strength.reset();
+  s.bodies = {body("flyer", 0, cases::Rect{0.0, width, 0.0, 1.0}, {density(al), {0.0, -v0}, 0.0}),
+              body("target", 1, cases::Rect{0.0, width, -1.0, 0.0}, {density(cu), {}, 0.0})};
+  return s;
+}
+
+struct Plateau {
+  double stress = 0.0, velocity = 0.0;
+};
+// Mean longitudinal stress P - s_zz and downward velocity over the rows with z in [z0, z1].
+Plateau plateau(const TvdSolver& solver, double z0, double z1) {
+  const Snapshot snap = solver.snapshot();
+  const GridSpec& g = solver.grid();
+  const Field& p = field(snap, "pressure");
+  const Field& v = field(snap, "velocity");
+  const bool strong = snap.fields.size() > 6;
+  Plateau out;
+  int n = 0;
+  for (int k = 0; k < g.nz; ++k) {
+    const double z = g.z0 + (k + 0.5) * g.dz;
+    if (z < z0 || z > z1) continue;
+    for (int i = 0; i < g.nx; ++i) {
+      const auto c = static_cast<std::size_t>(k) * g.nx + i;
+      out.stress += p.data[c] - (strong ? field(snap, "stress_deviator_zz").data[c] : 0.0);
+      out.velocity -= v.data[2 * c + 1];
+      ++n;
+    }
+  }
+  out.stress /= n;
+  out.velocity /= n;
+  return out;
+}
+
+// The transmitted and the reflected-side plateau at 0.8 us (the fronts then 0.37 cm into the
+// copper and 0.50 cm into the aluminium), read 0.05 cm clear of the contact and of the fronts.
+// Bound 1 %: the elastic-wave test's (TvdStrength.ElasticWaveTravelsAtLongitudinalSpeed); the
+// linear theory's own error at a strain of 1e-4 is of that order times 1e-2. It discriminates:
+// the hydrodynamic impedances (bulk sound speeds) give a stress 18 % lower, and the run without
+// strength is checked against them.
+TEST(TvdStrengthCut, WeldedContactCarriesTheAcousticStress) {
+  const double v0 = 1e-4;
+  const eos::Eos al = eos::aluminiumStudy();
+  const eos::Eos cu = eos::MieGruneisen{};
+  for (const bool strong : {true, false}) {
+    const double cLa =
+        strength::longitudinalSoundSpeed(soundSpeed(al), strong ? kShearAl : 0.0, density(al));
+    const double cLc =
+        strength::longitudinalSoundSpeed(soundSpeed(cu), strong ? kShearCu : 0.0, density(cu));
+    const double za = density(al) * cLa, zc = density(cu) * cLc;
+    const double sigma = za * zc * v0 / (za + zc), uc = za * v0 / (za + zc);
+    TvdSolver solver(weldedBar(strong, v0));
+    ASSERT_TRUE(solver.cutCells());
+    runTo(solver, 0.8);
+    const Plateau c = plateau(solver, -0.8 * cLc + 0.05, -0.05);
+    const Plateau a = plateau(solver, 0.05, 0.8 * cLa - 0.05);
+    std::printf(
+        "%s: sigma = %.5e Mbar, u_c = %.5e cm/us; copper %.5e (%+.2f %%), %.5e (%+.2f %%); "
+        "aluminium %.5e (%+.2f %%), flyer velocity %.5e (exact %.5e)\n",
+        strong ? "strength" : "hydro", sigma, uc, c.stress, 100.0 * (c.stress / sigma - 1.0),
+        c.velocity, 100.0 * (c.velocity / uc - 1.0), a.stress, 100.0 * (a.stress / sigma - 1.0),
+        a.velocity, uc);
+    EXPECT_NEAR(c.stress / sigma, 1.0, 0.01);
+    EXPECT_NEAR(a.stress / sigma, 1.0, 0.01);
+    EXPECT_NEAR(c.velocity / uc, 1.0, 0.01);
+    EXPECT_NEAR(a.velocity / uc, 1.0, 0.01);
+  }
+}
+
+// Planar impact of two different elastic-perfectly plastic plates (200 m/s, an aluminium flyer
+// on a copper target, the welded bar above): each plate carries an elastic precursor at its own
+// Hugoniot elastic limit sigma_HEL = Y0 (1 - nu) / (1 - 2 nu), nu from K = rho0 c0^2 and G
+// (Meyers 1994, ch. 7), with the plastic wave behind it: the copper precursor runs into the
+// target, the aluminium one back into the flyer. Read as in
+// TvdStrength.ElasticPrecursorCarriesTheHugoniotElasticLimit (the shared two-wave reading, each
+// profile from its plate's far end); bound 3 %, the and that test's (the linear formula
+// leaves out the EOS's finite-strain terms).
+TEST(TvdStrengthCut, EachPlateCarriesItsOwnHugoniotElasticLimit) {
+  const double v0 = 0.02, dx = 0.01, width = 4 * dx;
+  const double yAl = 0.003, yCu = 0.002;
+  cases::Scene s = cutScene(0.0, width, -1.8, 2.2, dx);
+  s.domain.boundary = {cases::Boundary::Wall, cases::Boundary::Wall, cases::Boundary::Wall,
+                       cases::Boundary::Outflow};
+  const eos::Eos al = eos::aluminiumStudy();
+  const eos::Eos cu = eos::MieGruneisen{};
+  s.materials = {elastic("aluminium", al, kShearAl, 0.896e-5),
+                 elastic("copper", cu, kShearCu, 0.383e-5)};
+  s.materials[0].strength->yield = strength::ConstantYield{yAl};
+  s.materials[1].strength->yield = strength::ConstantYield{yCu};
+  s.bodies = {body("flyer", 0, cases::Rect{0.0, width, 0.0, 2.2}, {density(al), {0.0, -v0}, 0.0}),
+              body("target", 1, cases::Rect{0.0, width, -1.8, 0.0}, {density(cu), {}, 0.0})};
+  auto hel = [](const eos::Eos& e, double g, double y) {
+    const double c = soundSpeed(e), k = density(e) * c * c;
+    const double nu = (3.0 * k - 2.0 * g) / (2.0 * (3.0 * k + g));
+    return y * (1.0 - nu) / (1.0 - 2.0 * nu);
+  };
+  const double helAl = hel(al, kShearAl, yAl), helCu = hel(cu, kShearCu, yCu);
+  TvdSolver solver(s);
+  runTo(solver, 3.0);
+  const Snapshot snap = solver.snapshot();
+  const GridSpec& g = solver.grid();
+  const Field& p = field(snap, "pressure");
+  const Field& szz = field(snap, "stress_deviator_zz");
+  std::vector<double> zc, sc, za, sa;  // copper from its far end up, aluminium from its top down
+  for (int k = 0; k < g.nz; ++k) {
+    const double z = g.z0 + (k + 0.5) * g.dz;
+    double st = 0.0;
+    for (int i = 0; i < g.nx; ++i) {
+      const auto c = static_cast<std::size_t>(k) * g.nx + i;
+      st += (p.data[c] - szz.data[c]) / g.nx;
+    }
+    if (z < 0.0) {
+      zc.push_back(z);
+      sc.push_back(st);
+    } else {
+      za.insert(za.begin(), -z);
+      sa.insert(sa.begin(), st);
+    }
+  }
+  const hvi::test::TwoWave wc = hvi::test::twoWave(zc, sc, helCu);
+  const hvi::test::TwoWave wa = hvi::test::twoWave(za, sa, helAl);
+  std::printf(
+      "copper: HEL %.6f Mbar, plateau %.6f (%+.2f %%), peak %.5f, fronts %.3f / %.3f; "
+      "aluminium: HEL %.6f, plateau %.6f (%+.2f %%), peak %.5f, fronts %.3f / %.3f\n",
+      helCu, wc.plateau, 100.0 * (wc.plateau / helCu - 1.0), wc.peak, wc.zElastic, wc.zPlastic,
+      helAl, wa.plateau, 100.0 * (wa.plateau / helAl - 1.0), wa.peak, -wa.zElastic, -wa.zPlastic);
+  EXPECT_NEAR(wc.plateau / helCu, 1.0, 0.03);
+  EXPECT_NEAR(wa.plateau / helAl, 1.0, 0.03);
+  EXPECT_GT(wc.peak, 2.0 * helCu);
+  EXPECT_GT(wa.peak, 2.0 * helAl);
+  EXPECT_GT(wc.zPlastic - wc.zElastic, 10.0 * dx);
+  EXPECT_GT(wa.zPlastic - wa.zElastic, 10.0 * dx);
+}
+
+// A 2 km/s copper block (Johnson-Cook OFHC copper) on a 6061-T6 plate (Steinberg-Guinan), walls
+// around, strongly plastic: two phases with strength, cut cells at the contact and the free
+// surfaces.
+cases::Scene blocks(Geometry g) {
+  const bool rz = g == Geometry::Axisymmetric;
+  cases::Scene s = cutScene(rz ? 0.0 : -0.4, 0.4, -0.2, 0.3, 0.02, g);
+  s.domain.boundary = {rz ? cases::Boundary::Axis : cases::Boundary::Wall, cases::Boundary::Wall,
+                       cases::Boundary::Wall, cases::Boundary::Wall};
+  cases::Material al = material("aluminium", eos::aluminiumStudy());
+  al.strength = strength::findPreset("al6061_t6")->material;
+  cases::Material cu = material("copper", eos::MieGruneisen{});
+  cu.strength = strength::findPreset("copper_ofhc")->material;
+  s.materials = {al, cu};
+  const double x0 = rz ? 0.0 : -0.163;
+  s.bodies = {body("striker", 1, cases::Rect{x0, 0.163, 0.013, 0.113}, {8.93, {0.0, -0.2}, 0.0}),
+              body("plate", 0, cases::Rect{-0.4, 0.4, -0.107, 0.013}, {2.79, {}, 0.0})};
+  return s;
+}
+
+std::vector<double> phaseMasses(const TvdSolver& s) {
+  const Phases& ph = s.phases();
+  std::vector<double> m(static_cast<std::size_t>(ph.count), 0.0);
+  for (int p = 0; p < ph.count; ++p)
+    for (long c = 0; c < s.grid().cells(); ++c)
+      m[static_cast<std::size_t>(p)] +=
+          ph.q[static_cast<std::size_t>(p)].rho[static_cast<std::size_t>(c)] * s.cellVolume(c);
+  return m;
+}
+
+// Total energy with interfaces: the strength step's face fluxes add to one cell what they take
+// from the other, the cell's increments are shared out among its phases so that they sum to
+// the cell's, and the walls do no work; the hydrodynamic cut-cell step changes the total only
+// by its floors (booked). So the total changes by what the ledger books to round-off: the bound
+// 1e-12 of the closed-box and cut-cell tests (TvdCutCells.ImpactConservesEveryMaterial). Every
+// phase's mass is exact as without strength; planar x momentum to round-off.
+void checkEnergy(Geometry g, bool open = false) {
+  cases::Scene scene = blocks(g);
+  // Open: the plate runs out through outflow sides at both x ends (r-z: at the rim), as a
+  // shield's plates do, so the stress's edge fluxes go to the ledger's outflow.
+  if (open) {
+    if (g == Geometry::Planar) scene.domain.boundary[0] = cases::Boundary::Outflow;
+    scene.domain.boundary[1] = cases::Boundary::Outflow;
+  }
+  TvdSolver solver(scene);
+  const Totals t0 = solver.totals();
+  const auto m0 = phaseMasses(solver);
+  runTo(solver, 1.0);
+  const Totals t1 = solver.totals();
+  const auto m1 = phaseMasses(solver);
+  const Budget led = solver.ledger().sum();
+  double epsMax = 0.0;
+  const Snapshot snap = solver.snapshot();
+  const Field& eps = field(snap, "plastic_strain");
+  const Field& obj = field(snap, "object");
+  double epsStriker = 0.0;
+  for (std::size_t c = 0; c < eps.data.size(); ++c) {
+    epsMax = std::max(epsMax, eps.data[c]);
+    if (obj.data[c] == 0.0) epsStriker = std::max(epsStriker, eps.data[c]);
+  }
+  const double dE = (t1.energy() - t0.energy() - led.energy) / t0.energy();
+  std::printf(
+      "%s blocks, %ld steps: energy %.2e (ledger %.2e), wall energy %.1e, masses %.1e %.1e, "
+      "max eps_p %.3f (striker %.3f)\n",
+      toString(g).data(), solver.step(), dE, led.energy / t0.energy(),
+      solver.ledger().boundary.energy, m1[0] / m0[0] - 1.0, m1[1] / m0[1] - 1.0, epsMax,
+      epsStriker);
+  EXPECT_NEAR(dE, 0.0, 1e-12);
+  if (open) {
+    EXPECT_NE(solver.ledger().outflow.energy, 0.0);  // the edges carried something
+  } else {
+    EXPECT_EQ(solver.ledger().boundary.energy, 0.0);
+  }
+  for (std::size_t p = 0; p < m0.size() && !open; ++p) EXPECT_NEAR(m1[p], m0[p], 1e-12 * m0[p]);
+  EXPECT_GT(epsMax, 0.05);      // the plastic return is exercised
+  EXPECT_GT(epsStriker, 0.05);  // in both phases
+  if (g == Geometry::Planar) {
+    const double scale = t0.mass * 0.2;
+    EXPECT_NEAR(t1.momentumX - t0.momentumX, led.momentumX, 1e-12 * scale);
+  }
+}
+TEST(TvdStrengthCut, TotalEnergyIsConserved) { checkEnergy(Geometry::Planar); }
+TEST(TvdStrengthCut, TotalEnergyIsConservedInRz) { checkEnergy(Geometry::Axisymmetric); }
+TEST(TvdStrengthCut, TotalEnergyIsConservedWithOutflowSides) {
+  checkEnergy(Geometry::Planar, true);
+  checkEnergy(Geometry::Axisymmetric, true);
+}
+
+// Restart: each phase's strength state is in the checkpoint, and the run continues bit for bit.
+TEST(TvdStrengthCut, RestartIsBitForBit) {
+  const cases::Scene s = blocks(Geometry::Planar);
+  TvdSolver a(s);
+  for (int i = 0; i < 31; ++i) a.advance(1e9);
+  std::stringstream cp;
+  a.writeCheckpoint(cp);
+  for (int i = 0; i < 20; ++i) a.advance(1e9);
+  TvdSolver b(s);
+  b.readCheckpoint(cp);
+  for (int i = 0; i < 20; ++i) b.advance(1e9);
+  EXPECT_EQ(a.time(), b.time());
+  for (int p = 0; p < 2; ++p) {
+    EXPECT_EQ(a.phases().q[p].mz, b.phases().q[p].mz);
+    EXPECT_EQ(a.phases().q[p].E, b.phases().q[p].E);
+  }
+  const Snapshot sa = a.snapshot(), sb = b.snapshot();
+  for (const char* f : {"stress_deviator_xx", "stress_deviator_zz", "stress_deviator_xz",
+                        "plastic_strain", "temperature"})
+    EXPECT_EQ(field(sa, f).data, field(sb, f).data) << f;
+}
+
+// The strength state moves with its phase: an elastic block in uniform motion (0.05, 0.03)
+// cm/us through vacuum (outflow sides) carrying a square patch of plastic strain, 4 us: its
+// leading and trailing edges cross cells every few steps, so the sweeps' per-phase advection and
+// the repair after the marker step both move it. Sum rho_p eps_p V is conserved to round-off
+// (every move is conservative: 1e-12, as the cut-cell mass tests), the patch's centroid moves
+// with the body (bound 1 % of the displacement, as the single-material advection test,
+// TvdStrength.StrengthStateIsAdvectedWithTheMaterial, measured there -0.15 %). The deviator is
+// not checked: in diagonal motion the cut-cell hydrodynamics itself does not keep the block
+// uniform (the same block without strength: |rho / rho0 - 1| up to 3.8e-3 and |w - vz| up to
+// 1.6e-4 cm/us in cells at least 0.8 full within 12 steps; TvdCutCells.BlockCarriedExactly moves
+// along x only), and the deviator answers that elastically (up to 1.7e-4 Mbar here).
+TEST(TvdStrengthCut, StrengthStateMovesWithItsPhase) {
+  const double vx = 0.05, vz = 0.03, t = 4.0, h = 0.05;
+  cases::Scene s = cutScene(-0.6, 1.4, -0.6, 1.0, h);
+  const eos::Eos al = eos::aluminiumStudy();
+  s.materials = {elastic("aluminium", al, kShearAl, 0.896e-5)};
+  s.bodies = {
+      body("block", 0, cases::Rect{-0.413, 0.437, -0.387, 0.463}, {density(al), {vx, vz}, 0.0})};
+  TvdSolver solver(s);
+  const GridSpec& g = solver.grid();
+  std::vector<double>& eps = solver.phaseStrengthStateForTesting(0, 3);
+  const Conserved& q = solver.phases().q[0];
+  auto moments = [&](double& sum, double& mx, double& mz) {
+    sum = mx = mz = 0.0;
+    for (int k = 0; k < g.nz; ++k)
+      for (int i = 0; i < g.nx; ++i) {
+        const auto c = static_cast<std::size_t>(k) * g.nx + i;
+        const double v = eps[c] * solver.cellVolume(static_cast<long>(c));
+        sum += v;
+        mx += v * (g.x0 + (i + 0.5) * g.dx);
+        mz += v * (g.z0 + (k + 0.5) * g.dz);
+      }
+    mx /= sum;
+    mz /= sum;
+  };
+  for (int k = 0; k < g.nz; ++k)
+    for (int i = 0; i < g.nx; ++i) {
+      const double x = g.x0 + (i + 0.5) * g.dx, z = g.z0 + (k + 0.5) * g.dz;
+      const auto c = static_cast<std::size_t>(k) * g.nx + i;
+      if (x > -0.2 && x < 0.0 && z > -0.2 && z < 0.0) eps[c] = 0.5 * q.rho[c];
+    }
+  double s0, x0, z0, s1, x1, z1;
+  moments(s0, x0, z0);
+  runTo(solver, t);
+  moments(s1, x1, z1);
+  double smax = 0.0;  // reported only (above)
+  for (int k = 0; k < 3; ++k)
+    for (std::size_t c = 0; c < q.rho.size(); ++c)
+      if (q.rho[c] > 0.0)
+        smax = std::max(smax, std::abs(solver.phaseStrengthStateForTesting(0, k)[c] / q.rho[c]));
+  std::printf(
+      "phase advection: %ld steps, sum %.2e relative, centroid moved (%.5f, %.5f) cm, expected "
+      "(%.5f, %.5f); max |s| %.1e Mbar\n",
+      solver.step(), s1 / s0 - 1.0, x1 - x0, z1 - z0, vx * t, vz * t, smax);
+  EXPECT_NEAR(s1 / s0, 1.0, 1e-12);
+  EXPECT_NEAR((x1 - x0) / (vx * t), 1.0, 0.01);
+  EXPECT_NEAR((z1 - z0) / (vz * t), 1.0, 0.01);
+}
+
+// Threads: per cell, per face, per line and the edge ledger in a fixed order.
+TEST(TvdStrengthCut, ThreadCountDoesNotChangeTheResult) {
+  cases::Scene s = blocks(Geometry::Planar);
+  s.tvd.cellSize = 0.004;
+  Options one, two;
+  one.threads = 1;
+  two.threads = 2;
+  TvdSolver a(s, one), b(s, two);
+  ASSERT_GE(a.grid().cells(), kParallelCells);
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(a.advance(1e9), b.advance(1e9));
+  for (int p = 0; p < 2; ++p) {
+    EXPECT_EQ(a.phases().q[p].mz, b.phases().q[p].mz);
+    EXPECT_EQ(a.phases().q[p].E, b.phases().q[p].E);
+  }
+  EXPECT_EQ(field(a.snapshot(), "stress_deviator_zz").data,
+            field(b.snapshot(), "stress_deviator_zz").data);
+}
+
+// The whole-cell interfaces and fracture stay refused, naming what to change.
+TEST(TvdStrengthCut, RefusesWhatIsNotBuilt) {
+  cases::Scene s = blocks(Geometry::Planar);
+  s.tvd.interfaces = cases::InterfaceMode::WholeCell;
+  try {
+    TvdSolver solver(s);
+    ADD_FAILURE() << "strength with whole-cell interfaces was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("conservative"), std::string::npos) << e.what();
+  }
+  s = blocks(Geometry::Planar);
+  s.effects.insert(Effect::Fracture);
+  EXPECT_THROW(TvdSolver solver(s), InputError);
+  EXPECT_NO_THROW(TvdSolver solver(blocks(Geometry::Planar)));
+}
+
+}  // namespace
+}  // namespace hvi::tvd
