@@ -181,7 +181,7 @@ class CutLineSolver {
       PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
       if (!ph.active) continue;
       if (!check(p, first, fail)) return false;
-      ledgerFaces(ph);
+      ledgerFaces(p, ph);
       if (first) resetThin(p, ph.w, ph.volW, 0.5);
       applyDry(ph);
     }
@@ -640,17 +640,21 @@ class CutLineSolver {
     }
   }
 
-  void ledgerFaces(const PhaseLine& ph) {
+  // What the stage moved through the domain's edge faces, for the ledger and per phase (the
+  // same numbers, so every phase's mass in the domain plus what it lost closes exactly).
+  void ledgerFaces(int p, const PhaseLine& ph) {
     const double h = 0.5 * C_.dt;
     if (L_.leftEdge) {
       const double s = h * W_.area[1] * ph.ap[1];
       const double* F = ph.flux[1].data();
       B_.edge[0].add(s * F[kRho], s * F[kMn], s * F[kMt], s * F[kE], C_.axis);
+      W_.edgeMass[2 * static_cast<std::size_t>(p)] += s * F[kRho];
     }
     if (L_.rightEdge) {
       const double s = h * W_.area[n_ + 1] * ph.ap[n_ + 1];
       const double* F = ph.flux[n_ + 1].data();
       B_.edge[1].add(-(s * F[kRho]), -(s * F[kMn]), -(s * F[kMt]), -(s * F[kE]), C_.axis);
+      W_.edgeMass[2 * static_cast<std::size_t>(p) + 1] -= s * F[kRho];
     }
   }
 
