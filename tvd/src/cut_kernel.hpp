@@ -478,7 +478,12 @@ class CutLineSolver {
 
   // The stage's result must be physical where the cell is live: a state the fallback and the
   // limiter could not keep positive stops the run, and what is left of a negative internal
-  // energy is floored (booked).
+  // energy is floored (booked). A cold compressed state (e ~ 0, P > 0: Tillotson's or
+  // Mie-Gruneisen's A mu) leaves the set e >= 0 under any flux with a finite wave speed (the
+  // Lax-Friedrichs state U + F(U)/s has rho e = -P^2 / (2 s^2 rho (1 + u/s)) < 0 at e = 0), so
+  // the floor there makes energy (+10 % on the Whipple d = 1 cm debris striking the wall).
+  // Options::keepColdStates (off: it destabilises thin cells, docs/tvd.md "The energy floor
+  // in cold compressed cells") keeps such a state where the EOS takes it.
   bool check(int p, bool first, LineFailure& fail) {
     PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
     mixDeficits(ph, first);
@@ -494,6 +499,8 @@ class CutLineSolver {
         return false;
       }
       const double kin = 0.5 * (m * m + t * t) / r;
+      if (E < kin && C_.keepColdStates && admissible(p, r, m, t, E, judgedVolume(ph, j, first)))
+        continue;
       if (E < kin) {  // raise the judged energy to the kinetic energy (e = 0), booked
         const double add = (kin - E) * (first ? 1.0 : 2.0);
         B_.floors.energy += 0.5 * add / W_.invVol[j];  // the final state changes by add / 2
@@ -501,6 +508,18 @@ class CutLineSolver {
       }
     }
     return true;
+  }
+
+  // The EOS takes the phase state (partial integrals r, m, t, E over its part `vol` of the
+  // cell): a finite, non-negative pressure and a positive, finite sound speed.
+  bool admissible(int p, double r, double m, double t, double E, double vol) const {
+    if (!(vol > 0.0)) return false;
+    return std::visit(
+        [&](const auto& eos) {
+          const CellState s = cellState(eos, r / vol, m / vol, t / vol, E / vol);
+          return std::isfinite(s.p) && s.p >= 0.0 && std::isfinite(s.c) && s.c > 0.0;
+        },
+        (*C_.materials)[static_cast<std::size_t>(p)].eos);
   }
 
   // A live cell the limiter left without positive mass: its deficit was not made by its own

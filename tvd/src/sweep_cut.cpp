@@ -62,6 +62,7 @@ void TvdSolver::sweepCut(int direction, double dt) {
   ctx.rhoThin = rhoThin_.data();
   ctx.entropyFix = options_.entropyFix;
   ctx.contactIterations = options_.contactIterations;
+  ctx.keepColdStates = options_.keepColdStates;
   ctx.dt = dt;
   ctx.h = h;
   ctx.axis = xdir ? 0 : 1;

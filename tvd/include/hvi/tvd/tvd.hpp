@@ -30,6 +30,11 @@ struct Options {
   //! Without markers, sweep detail::kBatch lines at a time (vectorised across lines); false:
   //! one line at a time, the reference the batches reproduce bit for bit (tests).
   bool lineBatches = true;
+  //! Cut-cell mode, an experiment (off): a phase cell's negative internal energy is floored
+  //! (raised to e = 0, booked) only where its EOS cannot take it (P < 0 or not finite, c not
+  //! positive). It removes the Whipple d = 1 cm run's floors but makes a thin-cell outflow scene
+  //! collapse (docs/tvd.md, "The energy floor in cold compressed cells").
+  bool keepColdStates = false;
 };
 
 //! Eulerian TVD solver (the scheme is specified in docs/tvd.md):
