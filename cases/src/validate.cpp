@@ -48,7 +48,9 @@ void checkAxisymmetric(const TableReader& b, const Body& body, double tol) {
 // lattice, 28 B: index, cached W and the compatible energy's pair data), ~100 B per TVD cell
 // (conserved state, 32 B, and a snapshot's fields, 56 B, at an output; the sweep buffers are per
 // line and thread: issue 17, measured 89 B marginal and 94-100 B per cell on 2-4 million cells),
-// ~470 B per TVD cell with marker lines (owners, per-body fractions, apertures and states). The
+// ~390 B per TVD cell with marker lines and two bodies, ~490 B with three (about 100 B per body:
+// its state, fractions, working and old fractions, four apertures; issue 13, docs/tvd.md
+// "Threading and memory"), so the cap below holds ~12 GiB for three bodies. The
 // caps keep a run near 12 GiB, under the 24 GiB of the machines this project targets, and keep
 // item counts far from integer overflow; a scene beyond them is refused before anything is
 // allocated.

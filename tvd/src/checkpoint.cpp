@@ -15,12 +15,14 @@ namespace hvi::tvd {
 namespace {
 
 constexpr std::uint64_t kMagic = 0x31304456544956ULL;  // "VITVD01" little-endian tag
-// 5 (written only with the effect strength, which a scene without it must not change): a
+// 6 (written with the effect strength or the cut-cell mode; a whole-cell scene without strength
+// still writes 4, unchanged): as 5, and every phase's outflow mass after the orphan count
+// (phaseOutflowMass); 5 (read too): a
 // strength flag after the interface-mode flag and rho times the deviator and the plastic strain
 // at the end; 4: an interface-mode flag after the markers flag, and the cut-cell phases after the
 // marker lines; 3 (read too): the outflow budget after the ledger (Ledger::outflow); 2 (read too)
 // had none, its boundary budget held the outflow sides and the walls together.
-constexpr std::uint32_t kVersion = 5;
+constexpr std::uint32_t kVersion = 6;
 constexpr std::uint32_t kVersionWithoutStrength = 4;
 
 void putBudget(BinaryWriter& w, const Budget& b) {
@@ -48,13 +50,14 @@ void getConserved(BinaryReader& r, Conserved& U, std::size_t n, const std::strin
 void TvdSolver::writeCheckpoint(std::ostream& out) const {
   BinaryWriter w(out, "tvd checkpoint");
   w.value(kMagic);
-  w.value(strength_ ? kVersion : kVersionWithoutStrength);
+  const bool flagged = strength_ || cut_;  // version 6: the strength flag is written
+  w.value(flagged ? kVersion : kVersionWithoutStrength);
   w.value<std::int32_t>(grid_.nx);
   w.value<std::int32_t>(grid_.nz);
   w.value<std::int32_t>(geometry_ == Geometry::Axisymmetric ? 1 : 0);
   w.value<std::int32_t>(markersOn_ ? 1 : 0);
   w.value<std::int32_t>(cut_ ? 1 : 0);
-  if (strength_) w.value<std::int32_t>(1);
+  if (flagged) w.value<std::int32_t>(strength_ ? 1 : 0);
   w.value(time_);
   w.value(dt0_);
   w.value<std::int64_t>(step_);
@@ -73,6 +76,7 @@ void TvdSolver::writeCheckpoint(std::ostream& out) const {
     // The apertures follow from the marker lines; the fractions are kept, since the repair
     // after a marker step may leave an orphan's fraction off the geometry.
     w.value<std::int64_t>(orphans_);
+    w.array(phaseOutflow_);
     for (int p = 0; p < phases_.count; ++p) {
       putConserved(w, phases_.q[static_cast<std::size_t>(p)]);
       w.array(phases_.alpha[static_cast<std::size_t>(p)]);
@@ -139,6 +143,8 @@ void TvdSolver::readCheckpoint(std::istream& in) {
   }
   if (cut_) {
     const auto orphans = r.value<std::int64_t>();
+    std::vector<double> phaseOut(materials_.size(), 0.0);  // before version 6: not kept
+    if (version >= 6) r.array(phaseOut, materials_.size(), "phase outflow mass");
     Phases ph = phases_;
     for (int p = 0; p < ph.count; ++p) {
       getConserved(r, ph.q[static_cast<std::size_t>(p)], n, "phase ");
@@ -152,6 +158,7 @@ void TvdSolver::readCheckpoint(std::istream& in) {
     phases_.coverOccupied();
     volumeFresh_ = true;
     orphans_ = static_cast<long>(orphans);
+    phaseOutflow_ = std::move(phaseOut);
   }
   if (strength_) {
     const char* names[detail::kStrengthFields] = {"rho s_xx", "rho s_zz", "rho s_xz",

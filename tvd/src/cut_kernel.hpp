@@ -182,7 +182,7 @@ class CutLineSolver {
       PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
       if (!ph.active) continue;
       if (!check(p, first, fail)) return false;
-      ledgerFaces(ph);
+      ledgerFaces(p, ph);
       if (first) resetThin(p, ph.w, ph.volW, 0.5);
       applyDry(ph);
     }
@@ -479,7 +479,12 @@ class CutLineSolver {
 
   // The stage's result must be physical where the cell is live: a state the fallback and the
   // limiter could not keep positive stops the run, and what is left of a negative internal
-  // energy is floored (booked).
+  // energy is floored (booked). A cold compressed state (e ~ 0, P > 0: Tillotson's or
+  // Mie-Gruneisen's A mu) leaves the set e >= 0 under any flux with a finite wave speed (the
+  // Lax-Friedrichs state U + F(U)/s has rho e = -P^2 / (2 s^2 rho (1 + u/s)) < 0 at e = 0), so
+  // the floor there makes energy (+10 % on the Whipple d = 1 cm debris striking the wall).
+  // Options::keepColdStates (off: it destabilises thin cells, docs/tvd.md "The energy floor
+  // in cold compressed cells") keeps such a state where the EOS takes it.
   bool check(int p, bool first, LineFailure& fail) {
     PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
     mixDeficits(ph, first);
@@ -495,6 +500,8 @@ class CutLineSolver {
         return false;
       }
       const double kin = 0.5 * (m * m + t * t) / r;
+      if (E < kin && C_.keepColdStates && admissible(p, r, m, t, E, judgedVolume(ph, j, first)))
+        continue;
       if (E < kin) {  // raise the judged energy to the kinetic energy (e = 0), booked
         const double add = (kin - E) * (first ? 1.0 : 2.0);
         B_.floors.energy += 0.5 * add / W_.invVol[j];  // the final state changes by add / 2
@@ -502,6 +509,18 @@ class CutLineSolver {
       }
     }
     return true;
+  }
+
+  // The EOS takes the phase state (partial integrals r, m, t, E over its part `vol` of the
+  // cell): a finite, non-negative pressure and a positive, finite sound speed.
+  bool admissible(int p, double r, double m, double t, double E, double vol) const {
+    if (!(vol > 0.0)) return false;
+    return std::visit(
+        [&](const auto& eos) {
+          const CellState s = cellState(eos, r / vol, m / vol, t / vol, E / vol);
+          return std::isfinite(s.p) && s.p >= 0.0 && std::isfinite(s.c) && s.c > 0.0;
+        },
+        (*C_.materials)[static_cast<std::size_t>(p)].eos);
   }
 
   // A live cell the limiter left without positive mass: its deficit was not made by its own
@@ -641,18 +660,23 @@ class CutLineSolver {
     }
   }
 
-  void ledgerFaces(PhaseLine& ph) {
+  // What the stage moved through the domain's edge faces, for the ledger and per phase (the
+  // same numbers, so every phase's mass in the domain plus what it lost closes exactly; the
+  // phase's own edgeMass feeds its strength state's advection).
+  void ledgerFaces(int p, PhaseLine& ph) {
     const double h = 0.5 * C_.dt;
     if (L_.leftEdge) {
       const double s = h * W_.area[1] * ph.ap[1];
       const double* F = ph.flux[1].data();
       ph.edgeMass += s * F[kRho];
       B_.edge[0].add(s * F[kRho], s * F[kMn], s * F[kMt], s * F[kE], C_.axis);
+      W_.edgeMass[2 * static_cast<std::size_t>(p)] += s * F[kRho];
     }
     if (L_.rightEdge) {
       const double s = h * W_.area[n_ + 1] * ph.ap[n_ + 1];
       const double* F = ph.flux[n_ + 1].data();
       B_.edge[1].add(-(s * F[kRho]), -(s * F[kMn]), -(s * F[kMt]), -(s * F[kE]), C_.axis);
+      W_.edgeMass[2 * static_cast<std::size_t>(p) + 1] -= s * F[kRho];
     }
   }
 

@@ -49,6 +49,9 @@ struct CutLineWork {
   std::vector<PhaseLine> phase;
   std::vector<double> area, invVol, invR;
   std::vector<double> relax;  // one cell's phases for the velocity relaxation (7 per phase)
+  //! Mass of phase p through the line's low (2 p) and high (2 p + 1) end face, inflow positive,
+  //! in line units (the kernel's ledgerFaces; the sweep books what crosses an outflow side).
+  std::vector<double> edgeMass;
 };
 
 }  // namespace hvi::tvd::detail

@@ -36,6 +36,7 @@ CutLineWork::CutLineWork(int cap, int phases) : capacity(cap) {
   invVol.assign(nb, 1.0);
   invR.assign(nb, 0.0);
   relax.assign(7 * static_cast<std::size_t>(phases), 0.0);
+  edgeMass.assign(2 * static_cast<std::size_t>(phases), 0.0);
 }
 
 }  // namespace detail

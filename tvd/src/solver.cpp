@@ -43,6 +43,10 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
       work_.back()->batch = std::make_unique<detail::BatchWork>(lineCells);
   }
   lineRecords_.resize(static_cast<std::size_t>(lineCells));
+  if (cut_) {
+    phaseOutflow_.assign(materials_.size(), 0.0);
+    phaseEdge_.assign(static_cast<std::size_t>(lineCells) * materials_.size(), 0.0);
+  }
   time_ = scene.tStart;
   if (markersOn_) {
     ownership_.setCutCells(cut_);

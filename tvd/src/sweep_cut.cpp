@@ -63,6 +63,7 @@ void TvdSolver::sweepCut(int direction, double dt) {
   ctx.rhoThin = rhoThin_.data();
   ctx.entropyFix = options_.entropyFix;
   ctx.contactIterations = options_.contactIterations;
+  ctx.keepColdStates = options_.keepColdStates;
   ctx.dt = dt;
   ctx.h = h;
   ctx.axis = xdir ? 0 : 1;
@@ -81,6 +82,8 @@ void TvdSolver::sweepCut(int direction, double dt) {
     for (int line = 0; line < lines; ++line) {
       LineRecord& rec = lineRecords_[static_cast<std::size_t>(line)];
       rec = LineRecord{};
+      std::fill_n(&phaseEdge_[static_cast<std::size_t>(line) * static_cast<std::size_t>(P)], P,
+                  0.0);
       if (ws.failed) continue;
       // Only the rows that can hold material (Phases::rowLo) have occupied cells.
       if (xdir && (line < phases_.rowLo || line >= phases_.rowHi)) continue;
@@ -178,6 +181,7 @@ void TvdSolver::sweepCut(int direction, double dt) {
 
       detail::LineBudget lb;
       detail::LineFailure fail;
+      std::fill(W.edgeMass.begin(), W.edgeMass.end(), 0.0);
       // Effect strength: each solid phase's mass before the sweep, for its state's advection.
       const bool carry = strength_ && !strength_->phases.empty();
       if (carry) {
@@ -221,10 +225,24 @@ void TvdSolver::sweepCut(int direction, double dt) {
       rec.relaxed = lb.relaxed;
       rec.mixed = lb.mixed;
       rec.bookEdges(lb, setup, lowSide, highSide, lineScale);
+      // Each phase's mass through the outflow sides (what left positive), as bookEdges books
+      // the sum (a wall's faces carry no mass).
+      double* out = &phaseEdge_[static_cast<std::size_t>(line) * static_cast<std::size_t>(P)];
+      const bool open[2] = {setup.leftEdge && lowSide == Side::Outflow,
+                            setup.rightEdge && highSide == Side::Outflow};
+      for (int p = 0; p < P; ++p) {
+        out[p] = 0.0;
+        for (int e = 0; e < 2; ++e)
+          if (open[e]) out[p] -= lineScale * W.edgeMass[2 * static_cast<std::size_t>(p) + e];
+      }
     }
   }
   volumeFresh_ = false;
   finishSweep(lines);
+  for (int line = 0; line < lines; ++line) {  // in line order, as the ledger
+    const double* out = &phaseEdge_[static_cast<std::size_t>(line) * static_cast<std::size_t>(P)];
+    for (int p = 0; p < P; ++p) phaseOutflow_[static_cast<std::size_t>(p)] += out[p];
+  }
 }
 
 }  // namespace hvi::tvd

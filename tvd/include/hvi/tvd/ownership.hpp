@@ -112,6 +112,9 @@ class Ownership {
   std::vector<double> target_, mass_, band_, scale_;
   // Scratch, sized once.
   std::vector<double> vxOld_, vzOld_, vxMid_, vzMid_;
+  // The time-centred velocity: in the cut-cell mode in place of the start velocity (setUp).
+  double* midX() { return cutCells_ ? vxOld_.data() : vxMid_.data(); }
+  double* midZ() { return cutCells_ ? vzOld_.data() : vzMid_.data(); }
   std::vector<Change> changes_;
   std::vector<signed char> known_;    // cell has a velocity for the markers
   std::vector<long> fresh_;           // cells given a velocity in this ring

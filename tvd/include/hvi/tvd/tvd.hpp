@@ -30,6 +30,11 @@ struct Options {
   //! Without markers, sweep detail::kBatch lines at a time (vectorised across lines); false:
   //! one line at a time, the reference the batches reproduce bit for bit (tests).
   bool lineBatches = true;
+  //! Cut-cell mode, an experiment (off): a phase cell's negative internal energy is floored
+  //! (raised to e = 0, booked) only where its EOS cannot take it (P < 0 or not finite, c not
+  //! positive). It removes the Whipple d = 1 cm run's floors but makes a thin-cell outflow scene
+  //! collapse (docs/tvd.md, "The energy floor in cold compressed cells").
+  bool keepColdStates = false;
 };
 
 //! Eulerian TVD solver (the scheme is specified in docs/tvd.md):
@@ -103,6 +108,9 @@ class TvdSolver final : public Solver {
   //! Cut-cell mode: deficits the limiter could not reach, mixed with a neighbour (docs/tvd.md
   //! "The thin film"), counted since this solver was built (a diagnostic; not checkpointed).
   [[nodiscard]] long deficitMixings() const { return mixings_; }
+  //! Cut-cell mode: mass of each phase (body, Phases) that left through the outflow sides since
+  //! the start (inflow negative; checkpointed): with it every body's mass closes to round-off.
+  [[nodiscard]] const std::vector<double>& phaseOutflowMass() const { return phaseOutflow_; }
 
  private:
   struct Workspace;
@@ -188,6 +196,8 @@ class TvdSolver final : public Solver {
   long relaxations_ = 0;                        // cut-cell mode: relaxed cell-stages (diagnostic)
   long mixings_ = 0;                            // cut-cell mode: deficits mixed (diagnostic)
   long orphans_ = 0;                            // cut-cell mode: cells kept off the geometry
+  std::vector<double> phaseOutflow_;  // cut-cell mode: each phase's mass out through outflow sides
+  std::vector<double> phaseEdge_;     // cut-cell mode: the same per line and sweep (line order)
   // Cut-cell mode: the working fractions equal alpha (the first sweep of a step reads alpha and
   // writes phases_.volume; every occupied cell lies in its line's window, so all are written).
   bool volumeFresh_ = true;
