@@ -33,7 +33,9 @@ void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list
     const std::size_t i = static_cast<std::size_t>(il);
     const PairState A = load(a, i);
     const int* nb = list.index.data() + i * stride;
-    const double* wc = list.w.data() + i * stride;
+    // The state-n pass runs at the positions the list was built at: its cached W if it has
+    // them, else the same W recomputed.
+    const double* wc = Cached && list.cacheW ? list.w.data() + i * stride : nullptr;
     const int cnt = list.count[i];
     const int oi = a.obj[i];
     const double ih2i = 1.0 / (A.h * A.h);
@@ -52,7 +54,7 @@ void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list
         ih2 = 1.0 / (hij * hij);
       }
       double w;
-      if constexpr (Cached) {
+      if (Cached && wc) {
         w = wc[k];
       } else {
         const double dx = A.x - a.x[j], dz = A.z - a.z[j];
@@ -138,7 +140,8 @@ void lanePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
         t.pwx = out.pairWx + i * stride;
         t.pwz = out.pairWz + i * stride;
       }
-      kernel(la, i, list.index.data() + i * stride, Cached ? list.w.data() + i * stride : nullptr,
+      kernel(la, i, list.index.data() + i * stride,
+             Cached && list.cacheW ? list.w.data() + i * stride : nullptr,
              cnt, visc.alpha, visc.beta, t);
       double sax = 0.0, saz = 0.0, sde = 0.0, sdrho = 0.0, shoop = 0.0, phi = 0.0;
       for (int k = 0; k < cnt; ++k) {
@@ -270,24 +273,49 @@ void compatibleEnergy(const NeighbourList& list, std::size_t nReal, const double
   }
 }
 
-void weightChange(const NeighbourList& list, std::size_t nReal, const int* obj, const double* h,
-                  const double* dmu, cases::Kernel kernel, double* rho) {
+namespace {
+template <class K>
+void weightChangeK(const NeighbourList& list, std::size_t nReal, const double* x0,
+                   const double* z0, const double* xg, const double* zg, const int* obj,
+                   const double* h, const double* dmu, double* rho) {
   const std::size_t stride = list.stride;
   const long nr = static_cast<long>(nReal);
 #pragma omp parallel for schedule(static) if (nr > kParallelPairs)
   for (long il = 0; il < nr; ++il) {
     const std::size_t i = static_cast<std::size_t>(il);
     const int* nb = list.index.data() + i * stride;
-    const double* wc = list.w.data() + i * stride;
+    const double* wc = list.cacheW ? list.w.data() + i * stride : nullptr;
     const int oi = obj[i];
+    const double xi = x0[i], zi = z0[i], hi = h[i];
     // Over i's own object, as the summation density and the continuity rate.
-    double s = dmu[i] * kernelSelf(kernel, h[i]);
+    double s = dmu[i] * K::value(0.0, hi);
     for (int k = 0; k < list.count[i]; ++k) {
       const std::size_t j = static_cast<std::size_t>(nb[k]);
-      if (obj[j] == oi) s += dmu[j] * wc[k];
+      if (obj[j] != oi) continue;
+      double w;
+      if (wc) {
+        w = wc[k];
+      } else {
+        // W_ij at x^n as the list build computed it (the same operations, the same bits).
+        const double dx = xi - (j < nReal ? x0[j] : xg[j]);
+        const double dz = zi - (j < nReal ? z0[j] : zg[j]);
+        const double hij = 0.5 * (hi + h[j]);
+        w = K::value(dx * dx + dz * dz, hij, 1.0 / (hij * hij));
+      }
+      s += dmu[j] * w;
     }
     rho[i] += s;
   }
+}
+}  // namespace
+
+void weightChange(const NeighbourList& list, std::size_t nReal, const double* x0,
+                  const double* z0, const double* xg, const double* zg, const int* obj,
+                  const double* h, const double* dmu, cases::Kernel kernel, double* rho) {
+  if (kernel == cases::Kernel::Gaussian)
+    weightChangeK<GaussianKernel>(list, nReal, x0, z0, xg, zg, obj, h, dmu, rho);
+  else
+    weightChangeK<CubicSplineKernel>(list, nReal, x0, z0, xg, zg, obj, h, dmu, rho);
 }
 
 ListPass selectListPass(cases::Kernel kernel) {

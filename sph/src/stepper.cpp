@@ -35,6 +35,8 @@ Stepper::Impl::Impl(const ParticleSystem& ps, std::vector<eos::Eos> mats, Steppe
       throw InputError(
           fmt::format("particle material {} is not one of the {} materials", k, materials.size()));
   a.resize(n);
+  // Indices only (docs/performance.md, "SPH memory"): the passes recompute W_ij.
+  list.cacheW = false;
   forEachState(*this, [&ps](auto member, auto& v) { v = ps.*member; });
   if (!cfg.strength.empty()) {
     if (cfg.strength.size() != materials.size() || cfg.strengthRho0.size() != materials.size())
@@ -263,8 +265,8 @@ double Stepper::step(double tStop) {
 #pragma omp parallel for schedule(static) if (nl > detail::kParallelElements)
     for (long i = 0; i < nl; ++i) s.dmu[i] = s.m[i] / (kTwoPi * std::abs(a.x[i])) - a.mu[i];
     s.bounds.copyGhostScalars(s.dmu.data(), s.n);
-    detail::weightChange(s.list, s.n, a.obj.data(), a.h.data(), s.dmu.data(), s.cfg.kernel,
-                         a.rho.data());
+    detail::weightChange(s.list, s.n, s.x0.data(), s.z0.data(), a.x.data(), a.z.data(),
+                         a.obj.data(), a.h.data(), s.dmu.data(), s.cfg.kernel, a.rho.data());
   }
   detail::evaluateEos(s.materials, s.mat.data(), a.rho.data(), s.e.data(), a.p.data(), a.c.data(),
                       s.n);

@@ -39,7 +39,9 @@ void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& li
     const double xi = a.x[i], zi = a.z[i], vxi = a.vx[i], vzi = a.vz[i], hi = a.h[i];
     const Sym2 ti{p.txx[i], p.tzz[i], p.txz[i]}, ri{p.rxx[i], p.rzz[i], p.rxz[i]};
     const int* nb = list.index.data() + i * stride;
-    const double* wc = list.w.data() + i * stride;
+    // The state-n pass runs at the list's positions: cached W if the list has them, else the
+    // same W recomputed.
+    const double* wc = Cached && list.cacheW ? list.w.data() + i * stride : nullptr;
     const int cnt = list.count[i];
     const double ih2i = 1.0 / (hi * hi);
     const double wdpi = K::value(q2dp * hi * hi, hi, ih2i);
@@ -59,7 +61,7 @@ void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& li
       const double dx = xi - a.x[j], dz = zi - a.z[j];
       const double r2 = dx * dx + dz * dz;
       double w;
-      if constexpr (Cached) {
+      if (Cached && wc) {
         w = wc[k];
       } else {
         w = K::value(r2, hij, ih2);

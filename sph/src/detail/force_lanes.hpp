@@ -29,7 +29,8 @@ struct RowTerms {
   double *pwx, *pwz;  //!< compatible half-state pass: w_ij times the pair acceleration
 };
 
-//! Terms of row i: `nb` its cnt neighbours, `wc` their cached W (cached pass) or null.
+//! Terms of row i: `nb` its cnt neighbours, `wc` their cached W (cached pass, when the list
+//! holds them) or null (W from the positions: the same bits where the list was built there).
 using RowKernel = void (*)(const LaneArrays& a, std::size_t i, const int* nb, const double* wc,
                            int cnt, double alpha, double beta, const RowTerms& out);
 

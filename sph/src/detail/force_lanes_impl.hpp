@@ -93,7 +93,7 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
     const D ih2 = anyLane(hj != hi) ? 1.0 / (hij * hij) : ih2i;
     const D q2 = r2 * ih2;
     D w;
-    if constexpr (Cached) {
+    if (Cached && wc) {
       if (k + L <= cnt)
         __builtin_memcpy(&w, wc + k, sizeof w);
       else

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <type_traits>
 #include <cstddef>
+#include <vector>
 
 #include "detail/force_lanes.hpp"
 #include "detail/parallel.hpp"
@@ -12,7 +13,7 @@
 namespace hvi::sph::detail {
 
 //! Lists, for each real particle i < nReal, the points j != i (real or ghost) closer than
-//! radiusFactor * h_ij, caching W_ij (0 beyond the kernel support). With `Density`, also
+//! radiusFactor * h_ij, caching W_ij (0 beyond the kernel support) if list.cacheW. With `Density`, also
 //! rho_i = mu_i W_ii + sum_j mu_j W_ij (docs/sph.md (5)) over i's own object (`obj` may be null
 //! without `Density`). Each row is written by one thread in a fixed order, so the result does
 //! not depend on the thread count.
@@ -39,12 +40,17 @@ void buildList(const double* x, const double* z, const double* h, const double* 
   if (sizing) list.stride = 1;
   for (;;) {
     const std::size_t stride = list.stride;
+    const bool cacheW = list.cacheW;
     if (list.index.size() < nReal * stride) {
       list.index.resize(nReal * stride);
-      list.w.resize(nReal * stride);
+      if (cacheW) list.w.resize(nReal * stride);
     }
+    if (!cacheW) list.w = std::vector<double>();
     int* index = list.index.data();
-    double* wc = list.w.data();
+    double* wc = cacheW ? list.w.data() : nullptr;
+    // Without the cache the W of a row live in a scratch row per thread (the density needs
+    // them once); with neither the cache nor the density they are not computed.
+    const bool needW = cacheW || Density;
     int* count = list.count.data();
     int maxCount = 0;
     const long nr = static_cast<long>(nReal);
@@ -53,7 +59,10 @@ void buildList(const double* x, const double* z, const double* h, const double* 
     // 2 lanes (no AVX2) measured slower than the one-candidate-at-a-time loop with its branch
     // (docs/performance.md): that loop, then; the same pairs, W and densities.
     const bool lanes = laneWidth() >= 4;
-#pragma omp parallel for schedule(static) if (nr > kParallelPairs) reduction(max : maxCount)
+#pragma omp parallel if (nr > kParallelPairs)
+  {
+    std::vector<double> scratch(cacheW || !needW ? 0 : stride);
+#pragma omp for schedule(static) reduction(max : maxCount)
     for (long il = 0; il < nr; ++il) {
       const std::size_t i = static_cast<std::size_t>(il);
       const double xi = x[i], zi = z[i], hi = h[i];
@@ -82,7 +91,7 @@ void buildList(const double* x, const double* z, const double* h, const double* 
             const double w = K::value(r2, hij, ih2);
             if (cnt < static_cast<int>(stride)) {
               index[base + static_cast<std::size_t>(cnt)] = j;
-              wc[base + static_cast<std::size_t>(cnt)] = w;
+              if (cacheW) wc[base + static_cast<std::size_t>(cnt)] = w;
             }
             ++cnt;
             if constexpr (Density) {
@@ -96,7 +105,7 @@ void buildList(const double* x, const double* z, const double* h, const double* 
         continue;
       }
       int* slot = index + base;
-      double* wr = wc + base;  // the Gaussian's W come with the scan
+      double* wr = cacheW ? wc + base : scratch.data();  // the Gaussian's W come with the scan
       const int last = static_cast<int>(stride) - 1;
       // Pass 1, without a branch on the distance: every candidate's sorted position is written
       // at the row's end and kept (the end advances) if it is within radiusFactor * h_ij. So a
@@ -108,14 +117,14 @@ void buildList(const double* x, const double* z, const double* h, const double* 
         const int s1 = grid.begin(row * nx + std::min(cx + kReach, nx - 1) + 1);
         // h_ij = h_i bit for bit when h_j = h_i (then the radius is radiusFactor h_i).
         cnt = scan(sx, sz, sh, order, s0, s1, xi, zi, hi, rf2, static_cast<int>(i), slot,
-                   kGauss ? wr : nullptr, cnt, last);
+                   kGauss && needW ? wr : nullptr, cnt, last);
       }
       count[i] = cnt;
       maxCount = std::max(maxCount, cnt);
       if (cnt > last) continue;  // no spare slot: redone with a wider stride
       // Pass 2: W_ij of the kept pairs (the Gaussian's came with the scan), then the sorted
       // positions become point indices and the density adds up in the order the pairs were found.
-      if constexpr (!kGauss) {
+      if (!kGauss && needW) {
         for (int k = 0; k < cnt; ++k) {
           const int s = slot[k];
           const double dx = xi - sx[s], dz = zi - sz[s];
@@ -134,6 +143,7 @@ void buildList(const double* x, const double* z, const double* h, const double* 
       }
       if constexpr (Density) rho[i] = sum;
     }
+  }
     if (static_cast<std::size_t>(maxCount) < stride) return;
     // Compression (or a ghost-rich corner) filled a row: widen every row and redo. Rare, and
     // the stride never shrinks, so a run allocates only a handful of times.

@@ -52,9 +52,11 @@ void compatibleEnergy(const NeighbourList& list, std::size_t nReal, const double
 //! r-z predictor (docs/sph-rz.md, "Density"): adds to rho_i the change of the summation
 //! density through the ring weights alone, sum_j dmu_j W_ij over i's own object (j = i
 //! included), with dmu = mu^{n+1/2} - mu^n on every point (ghosts as their parents) and the
-//! W_ij cached by the list build at x^n.
-void weightChange(const NeighbourList& list, std::size_t nReal, const int* obj, const double* h,
-                  const double* dmu, cases::Kernel kernel, double* rho);
+//! W_ij of the list build at x^n: cached by it, or recomputed from x0, z0 (the reals at x^n)
+//! and xg, zg (the ghosts, indices >= nReal, still at x^n: refreshed after this).
+void weightChange(const NeighbourList& list, std::size_t nReal, const double* x0,
+                  const double* z0, const double* xg, const double* zg, const int* obj,
+                  const double* h, const double* dmu, cases::Kernel kernel, double* rho);
 
 //! Builds the neighbour lists of the real particles among the a.size() points and, if
 //! `rhoOut` is not null, the summation density of the real particles into it (over the

@@ -35,13 +35,16 @@ class CellGrid {
 
 //! Neighbours of each real particle i in slots [i * stride, i * stride + count[i]) (a CSR
 //! with a fixed row stride, so the rows are filled in parallel without a counting pass; the
-//! stride grows when a row overflows). With each neighbour the kernel value W_ij found when the
-//! list was built, so that the first force pass of a step needs no exponential.
+//! stride grows when a row overflows). With `cacheW`, with each neighbour the kernel value W_ij
+//! found when the list was built (the mass iteration reuses it over many sweeps); the stepper's
+//! list holds only the indices (4 B per slot instead of 12) and its passes recompute W_ij from
+//! the positions, the same bits (docs/performance.md, "SPH memory").
 struct NeighbourList {
   std::size_t stride = 0;
+  bool cacheW = true;
   std::vector<int> count;
   std::vector<int> index;
-  std::vector<double> w;
+  std::vector<double> w;  //!< empty without cacheW
 };
 
 //! Brute-force-checkable entry point: lists, for the first `nReal` of `n` points, every other
