@@ -1,6 +1,7 @@
 //! @file Predictor-corrector step driver (docs/sph.md).
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <numbers>
 
@@ -24,6 +25,7 @@ Stepper::Impl::Impl(const ParticleSystem& ps, std::vector<eos::Eos> mats, Steppe
   passCached = detail::selectForcePass(cfg.kernel, rz, cfg.viscosity, compatible, true);
   passFresh = detail::selectForcePass(cfg.kernel, rz, cfg.viscosity, compatible, false);
   passList = detail::selectListPass(cfg.kernel);
+  passRemainder = detail::selectRemainderPass(cfg.kernel, rz, cfg.viscosity);
   if (!(cfg.cfl > 0.0)) throw InputError(fmt::format("sph.cfl = {} must be > 0", cfg.cfl));
   // A particle moves at most (cfl/2) h_i in the half step (dt <= cfl h_i / |v_i|), so a pair
   // closes by at most cfl h_ij: a skin of cfl h_ij (plus a margin for rounding) keeps the
@@ -46,6 +48,8 @@ Stepper::Impl::Impl(const ParticleSystem& ps, std::vector<eos::Eos> mats, Steppe
                                                        cfg.artificialStressPower, cfg.fracture);
     strength->resize(n);
   }
+  const char* store = std::getenv("HVI_SPH_STORE_PAIRS");
+  storePairs = compatible && (strength || (store && std::atoi(store) != 0));
   t = cfg.time;
   resizeWork();
   corrector();
@@ -132,8 +136,12 @@ void Stepper::Impl::compatibleRemainder(double half) {
     daz[i] = az1[i] - az0[i];
   }
   bounds.mirrorGhostVectors(dax.data(), daz.data(), n);
-  detail::compatibleEnergy(list, n, pairWx.data(), pairWz.data(), dax.data(), daz.data(),
-                           a.rw.data(), rz ? hoopAx.data() : nullptr, half, de1.data());
+  if (storePairs)
+    detail::compatibleEnergy(list, n, pairWx.data(), pairWz.data(), dax.data(), daz.data(),
+                             a.rw.data(), rz ? hoopAx.data() : nullptr, half, de1.data());
+  else
+    passRemainder(a, n, list, cfg.visc, dax.data(), daz.data(), rz ? hoopAx.data() : nullptr,
+                  half, de1.data());
 }
 
 double Stepper::Impl::particleTimeStep(std::size_t i, bool* byAcceleration) const {
@@ -284,14 +292,16 @@ double Stepper::step(double tStop) {
   }
   detail::Rates ratesHalf{s.ax1.data(), s.az1.data(), s.de1.data(), nullptr, nullptr};
   if (s.compatible) {
-    // Grows only with the list's stride (set by the corrector's list build).
-    const std::size_t entries = s.n * s.list.stride;
-    if (s.pairWx.size() < entries) {
-      s.pairWx.resize(entries);
-      s.pairWz.resize(entries);
+    if (s.storePairs) {
+      // Grows only with the list's stride (set by the corrector's list build).
+      const std::size_t entries = s.n * s.list.stride;
+      if (s.pairWx.size() < entries) {
+        s.pairWx.resize(entries);
+        s.pairWz.resize(entries);
+      }
+      ratesHalf.pairWx = s.pairWx.data();
+      ratesHalf.pairWz = s.pairWz.data();
     }
-    ratesHalf.pairWx = s.pairWx.data();
-    ratesHalf.pairWz = s.pairWz.data();
     ratesHalf.hoopAx = s.rz ? s.hoopAx.data() : nullptr;
   }
   s.passFresh(a, s.n, s.list, s.cfg.visc, s.axis.get(), ratesHalf);

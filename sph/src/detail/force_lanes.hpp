@@ -26,7 +26,7 @@ struct RowTerms {
   double* drho;  //!< cached pass: mu_j v_ij . grad W over i's own object, else 0
   double* hoop;  //!< r-z: mu_j q_j W_ij
   double* phi;   //!< cached viscous pass: phi_ij (<= 0)
-  double *pwx, *pwz;  //!< compatible half-state pass: w_ij times the pair acceleration
+  double *pwx, *pwz;  //!< compatible half-state pass: w_ij times the pair acceleration (or null)
 };
 
 //! Terms of row i: `nb` its cnt neighbours, `wc` their cached W (cached pass, when the list
