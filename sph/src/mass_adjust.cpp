@@ -22,6 +22,7 @@ MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) 
   MassAdjustReport report;
   if (n == 0) return report;
   detail::PairArrays a;
+  a.lean = true;
   a.resize(n);
   double hmax = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -39,6 +40,7 @@ MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) 
   bounds.makeGhosts(a, n, support * hmax);
   CellGrid grid;
   NeighbourList list;
+  list.fixedPoints = true;
   detail::selectListPass(opt.kernel)(a, n, support, grid, list, nullptr);
 
   std::vector<double> rho(n), self(n);

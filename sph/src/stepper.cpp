@@ -17,7 +17,7 @@ namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 }
 
-Stepper::Impl::Impl(const ParticleSystem& ps, std::vector<eos::Eos> mats, StepperConfig config)
+Stepper::Impl::Impl(ParticleSystem ps, std::vector<eos::Eos> mats, StepperConfig config)
     : cfg(std::move(config)), materials(std::move(mats)), bounds(cfg.domain, cfg.geometry) {
   rz = cfg.geometry == Geometry::Axisymmetric;
   if (rz) axis = std::make_unique<detail::AxisCorrection>(cfg.kernel);
@@ -39,7 +39,8 @@ Stepper::Impl::Impl(const ParticleSystem& ps, std::vector<eos::Eos> mats, Steppe
   a.resize(n);
   // Indices only (docs/performance.md, "SPH memory"): the passes recompute W_ij.
   list.cacheW = false;
-  forEachState(*this, [&ps](auto member, auto& v) { v = ps.*member; });
+  forEachState(*this, [&ps](auto member, auto& v) { v = std::move(ps.*member); });
+  ps = ParticleSystem();  // rho, p, c: corrector() derives them
   if (!cfg.strength.empty()) {
     if (cfg.strength.size() != materials.size() || cfg.strengthRho0.size() != materials.size())
       throw InputError("SPH strength: one entry per material is needed");
@@ -221,6 +222,8 @@ void Stepper::Impl::removeOutflow() {
 
 Stepper::Stepper(const ParticleSystem& ps, std::vector<eos::Eos> materials, StepperConfig config)
     : impl_(std::make_unique<Impl>(ps, std::move(materials), std::move(config))) {}
+Stepper::Stepper(ParticleSystem&& ps, std::vector<eos::Eos> materials, StepperConfig config)
+    : impl_(std::make_unique<Impl>(std::move(ps), std::move(materials), std::move(config))) {}
 Stepper::~Stepper() = default;
 
 double Stepper::step(double tStop) {
@@ -296,6 +299,9 @@ double Stepper::step(double tStop) {
       // Grows only with the list's stride (set by the corrector's list build).
       const std::size_t entries = s.n * s.list.stride;
       if (s.pairWx.size() < entries) {
+        // Rewritten by the pass: freed first, not copied into the larger arrays.
+        s.pairWx = std::vector<double>();
+        s.pairWz = std::vector<double>();
         s.pairWx.resize(entries);
         s.pairWz.resize(entries);
       }

@@ -42,6 +42,10 @@ void buildList(const double* x, const double* z, const double* h, const double* 
     const std::size_t stride = list.stride;
     const bool cacheW = list.cacheW;
     if (list.index.size() < nReal * stride) {
+      // The rows are rewritten: the old ones are freed first, so that a wider list does not
+      // hold both for a moment (that moment was a run's peak memory).
+      list.index = std::vector<int>();
+      list.w = std::vector<double>();
       list.index.resize(nReal * stride);
       if (cacheW) list.w.resize(nReal * stride);
     }
@@ -149,7 +153,9 @@ void buildList(const double* x, const double* z, const double* h, const double* 
     // the stride never shrinks, so a run allocates only a handful of times.
     // The first sizing leaves 1/8 spare (the lattice's own count plus the ghosts' corners).
     const auto mc = static_cast<std::size_t>(maxCount);
-    list.stride = sizing ? mc + mc / 8 + 2 : mc + mc / 4 + 4;
+    list.stride = sizing && list.fixedPoints ? mc + 1  // the scan's one spare slot
+                  : sizing                     ? mc + mc / 8 + 2
+                                               : mc + mc / 4 + 4;
     sizing = false;
   }
 }

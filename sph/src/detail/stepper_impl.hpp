@@ -14,7 +14,7 @@
 namespace hvi::sph {
 
 struct Stepper::Impl {
-  Impl(const ParticleSystem& ps, std::vector<eos::Eos> materials, StepperConfig config);
+  Impl(ParticleSystem ps, std::vector<eos::Eos> materials, StepperConfig config);
 
   void corrector();          // ghosts, list, summation density, EOS, derived values
   void deriveWeights();      // rw, mu of the reals from their positions and masses

@@ -42,6 +42,9 @@ class CellGrid {
 struct NeighbourList {
   std::size_t stride = 0;
   bool cacheW = true;
+  //! The points never move while the list is used (the mass iteration): a new list's rows are
+  //! sized to the longest row exactly instead of with room for compression.
+  bool fixedPoints = false;
   std::vector<int> count;
   std::vector<int> index;
   std::vector<double> w;  //!< empty without cacheW
