@@ -66,8 +66,8 @@ MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) 
         if (!alive[i]) continue;
         const int obj = a.obj[i];
         double sum = a.mu[i] * self[i];
-        const int* nb = list.index.data() + i * list.stride;
-        const double* w = list.w.data() + i * list.stride;
+        const int* nb = list.index.data() + list.start[i];
+        const double* w = list.w.data() + list.start[i];
         for (int k = 0; k < list.count[i]; ++k) {
           const std::size_t j = static_cast<std::size_t>(nb[k]);
           if (a.obj[j] == obj) sum += a.mu[j] * w[k];

@@ -42,16 +42,15 @@ inline void remainderRow(const int* nb, int cnt, const double* wx, const double*
 template <class K, bool RZ, bool Viscous, bool Cached, bool Compatible>
 void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
                const MonaghanViscosity& visc, const AxisCorrection* axis, const Rates& out) {
-  const std::size_t stride = list.stride;
   const long nr = static_cast<long>(nReal);
 #pragma omp parallel for schedule(static) if (nr > kParallelPairs)
   for (long il = 0; il < nr; ++il) {
     const std::size_t i = static_cast<std::size_t>(il);
     const PairState A = load(a, i);
-    const int* nb = list.index.data() + i * stride;
+    const int* nb = list.index.data() + list.start[i];
     // The state-n pass runs at the positions the list was built at: its cached W if it has
     // them, else the same W recomputed.
-    const double* wc = Cached && list.cacheW ? list.w.data() + i * stride : nullptr;
+    const double* wc = Cached && list.cacheW ? list.w.data() + list.start[i] : nullptr;
     const int cnt = list.count[i];
     const int oi = a.obj[i];
     const double ih2i = 1.0 / (A.h * A.h);
@@ -59,8 +58,8 @@ void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list
     // The compatible energy's pair data (half state only): w_ij times i's pair acceleration.
     constexpr bool kPairs = Compatible && !Cached;
     // Null pairWx: the remainder recomputes them (RemainderPass).
-    double* pwx = kPairs && out.pairWx ? out.pairWx + i * stride : nullptr;
-    double* pwz = kPairs && out.pairWx ? out.pairWz + i * stride : nullptr;
+    double* pwx = kPairs && out.pairWx ? out.pairWx + list.start[i] : nullptr;
+    double* pwz = kPairs && out.pairWx ? out.pairWz + list.start[i] : nullptr;
     for (int k = 0; k < cnt; ++k) {
       const std::size_t j = static_cast<std::size_t>(nb[k]);
       // Within an object h is constant, so h_ij = h_i for most pairs: skip the division.
@@ -154,11 +153,11 @@ void lanePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
       const std::size_t i = static_cast<std::size_t>(il);
       const int cnt = list.count[i];
       if (kPairs && out.pairWx) {
-        t.pwx = out.pairWx + i * stride;
-        t.pwz = out.pairWz + i * stride;
+        t.pwx = out.pairWx + list.start[i];
+        t.pwz = out.pairWz + list.start[i];
       }
-      kernel(la, i, list.index.data() + i * stride,
-             Cached && list.cacheW ? list.w.data() + i * stride : nullptr,
+      kernel(la, i, list.index.data() + list.start[i],
+             Cached && list.cacheW ? list.w.data() + list.start[i] : nullptr,
              cnt, visc.alpha, visc.beta, t);
       double sax = 0.0, saz = 0.0, sde = 0.0, sdrho = 0.0, shoop = 0.0, phi = 0.0;
       for (int k = 0; k < cnt; ++k) {
@@ -270,13 +269,12 @@ ForcePass selectForcePass(cases::Kernel kernel, bool rz, bool viscous, bool comp
 void compatibleEnergy(const NeighbourList& list, std::size_t nReal, const double* pairWx,
                       const double* pairWz, const double* dax, const double* daz, const double* rw,
                       const double* hoopAx, double halfDt, double* de) {
-  const std::size_t stride = list.stride;
   const long nr = static_cast<long>(nReal);
 #pragma omp parallel for schedule(static) if (nr > kParallelPairs)
   for (long il = 0; il < nr; ++il) {
     const std::size_t i = static_cast<std::size_t>(il);
-    remainderRow(list.index.data() + i * stride, list.count[i], pairWx + i * stride,
-                 pairWz + i * stride, i, dax, daz, rw, hoopAx, halfDt, de);
+    remainderRow(list.index.data() + list.start[i], list.count[i], pairWx + list.start[i],
+                 pairWz + list.start[i], i, dax, daz, rw, hoopAx, halfDt, de);
   }
 }
 
@@ -300,7 +298,7 @@ void scalarRemainder(const PairArrays& a, std::size_t nReal, const NeighbourList
     for (long il = 0; il < nr; ++il) {
       const std::size_t i = static_cast<std::size_t>(il);
       const PairState A = load(a, i);
-      const int* nb = list.index.data() + i * stride;
+      const int* nb = list.index.data() + list.start[i];
       const int cnt = list.count[i];
       const double ih2i = 1.0 / (A.h * A.h);
       for (int k = 0; k < cnt; ++k) {  // as forcePass<..., Cached = false, Compatible = true>
@@ -346,7 +344,7 @@ void laneRemainder(const PairArrays& a, std::size_t nReal, const NeighbourList& 
 #pragma omp for schedule(static)
     for (long il = 0; il < nr; ++il) {
       const std::size_t i = static_cast<std::size_t>(il);
-      const int* nb = list.index.data() + i * stride;
+      const int* nb = list.index.data() + list.start[i];
       const int cnt = list.count[i];
       kernel(la, i, nb, nullptr, cnt, visc.alpha, visc.beta, t);
       remainderRow(nb, cnt, t.pwx, t.pwz, i, dax, daz, a.rw.data(), hoopAx, halfDt, de);
@@ -379,13 +377,12 @@ template <class K>
 void weightChangeK(const NeighbourList& list, std::size_t nReal, const double* x0,
                    const double* z0, const double* xg, const double* zg, const int* obj,
                    const double* h, const double* dmu, double* rho) {
-  const std::size_t stride = list.stride;
   const long nr = static_cast<long>(nReal);
 #pragma omp parallel for schedule(static) if (nr > kParallelPairs)
   for (long il = 0; il < nr; ++il) {
     const std::size_t i = static_cast<std::size_t>(il);
-    const int* nb = list.index.data() + i * stride;
-    const double* wc = list.cacheW ? list.w.data() + i * stride : nullptr;
+    const int* nb = list.index.data() + list.start[i];
+    const double* wc = list.cacheW ? list.w.data() + list.start[i] : nullptr;
     const int oi = obj[i];
     const double xi = x0[i], zi = z0[i], hi = h[i];
     // Over i's own object, as the summation density and the continuity rate.

@@ -296,8 +296,8 @@ double Stepper::step(double tStop) {
   detail::Rates ratesHalf{s.ax1.data(), s.az1.data(), s.de1.data(), nullptr, nullptr};
   if (s.compatible) {
     if (s.storePairs) {
-      // Grows only with the list's stride (set by the corrector's list build).
-      const std::size_t entries = s.n * s.list.stride;
+      // One entry per list slot (rows as the corrector's list build laid them out).
+      const std::size_t entries = s.list.start[s.n];
       if (s.pairWx.size() < entries) {
         // Rewritten by the pass: freed first, not copied into the larger arrays.
         s.pairWx = std::vector<double>();

@@ -34,20 +34,27 @@ void buildList(const double* x, const double* z, const double* h, const double* 
   const double* sh = grid.sortedH();
   const int nx = grid.nx(), nz = grid.nz();
   list.count.resize(nReal);
-  // A new list is sized by a first pass that only counts (every row overflows a stride of
-  // one), so its rows are as long as the lattice needs, not a fixed guess.
-  bool sizing = list.stride == 0;
-  if (sizing) list.stride = 1;
+  // A new list, or one whose particles changed in number (outflow), is sized by a first pass
+  // that only counts (every row overflows a capacity of one), so its rows are as long as the
+  // lattice needs, not a fixed guess.
+  std::vector<std::size_t>& start = list.start;
+  bool sizing = start.size() != nReal + 1;
+  if (sizing) {
+    start.resize(nReal + 1);
+    for (std::size_t i = 0; i <= nReal; ++i) start[i] = i;
+    list.stride = 1;
+  }
   for (;;) {
     const std::size_t stride = list.stride;
+    const std::size_t total = start[nReal];
     const bool cacheW = list.cacheW;
-    if (list.index.size() < nReal * stride) {
+    if (list.index.size() < total) {
       // The rows are rewritten: the old ones are freed first, so that a wider list does not
       // hold both for a moment (that moment was a run's peak memory).
       list.index = std::vector<int>();
       list.w = std::vector<double>();
-      list.index.resize(nReal * stride);
-      if (cacheW) list.w.resize(nReal * stride);
+      list.index.resize(total);
+      if (cacheW) list.w.resize(total);
     }
     if (!cacheW) list.w = std::vector<double>();
     int* index = list.index.data();
@@ -56,7 +63,7 @@ void buildList(const double* x, const double* z, const double* h, const double* 
     // them once); with neither the cache nor the density they are not computed.
     const bool needW = cacheW || Density;
     int* count = list.count.data();
-    int maxCount = 0;
+    int overflow = 0;
     const long nr = static_cast<long>(nReal);
     const double rf2 = radiusFactor * radiusFactor;
     const ScanKernel scan = scanKernel();
@@ -66,12 +73,13 @@ void buildList(const double* x, const double* z, const double* h, const double* 
 #pragma omp parallel if (nr > kParallelPairs)
   {
     std::vector<double> scratch(cacheW || !needW ? 0 : stride);
-#pragma omp for schedule(static) reduction(max : maxCount)
+#pragma omp for schedule(static) reduction(max : overflow)
     for (long il = 0; il < nr; ++il) {
       const std::size_t i = static_cast<std::size_t>(il);
       const double xi = x[i], zi = z[i], hi = h[i];
       const int cx = grid.cellX(xi), cz = grid.cellZ(zi);
-      const std::size_t base = i * stride;
+      const std::size_t base = start[i];
+      const int capacity = static_cast<int>(start[i + 1] - base);
       if (!lanes) {
         const double ih2i = 1.0 / (hi * hi), radi2 = rf2 * hi * hi;
         int cnt = 0;
@@ -93,7 +101,7 @@ void buildList(const double* x, const double* z, const double* h, const double* 
             }
             if (r2 >= rad2) continue;
             const double w = K::value(r2, hij, ih2);
-            if (cnt < static_cast<int>(stride)) {
+            if (cnt < capacity) {
               index[base + static_cast<std::size_t>(cnt)] = j;
               if (cacheW) wc[base + static_cast<std::size_t>(cnt)] = w;
             }
@@ -104,13 +112,13 @@ void buildList(const double* x, const double* z, const double* h, const double* 
           }
         }
         count[i] = cnt;
-        maxCount = std::max(maxCount, cnt);
+        if (cnt >= capacity) overflow = 1;
         if constexpr (Density) rho[i] = sum;
         continue;
       }
       int* slot = index + base;
       double* wr = cacheW ? wc + base : scratch.data();  // the Gaussian's W come with the scan
-      const int last = static_cast<int>(stride) - 1;
+      const int last = capacity - 1;
       // Pass 1, without a branch on the distance: every candidate's sorted position is written
       // at the row's end and kept (the end advances) if it is within radiusFactor * h_ij. So a
       // row needs one spare slot; once the row is full the last slot is overwritten and the
@@ -124,8 +132,10 @@ void buildList(const double* x, const double* z, const double* h, const double* 
                    kGauss && needW ? wr : nullptr, cnt, last);
       }
       count[i] = cnt;
-      maxCount = std::max(maxCount, cnt);
-      if (cnt > last) continue;  // no spare slot: redone with a wider stride
+      if (cnt > last) {  // no spare slot: redone with a wider row
+        overflow = 1;
+        continue;
+      }
       // Pass 2: W_ij of the kept pairs (the Gaussian's came with the scan), then the sorted
       // positions become point indices and the density adds up in the order the pairs were found.
       if (!kGauss && needW) {
@@ -148,14 +158,26 @@ void buildList(const double* x, const double* z, const double* h, const double* 
       if constexpr (Density) rho[i] = sum;
     }
   }
-    if (static_cast<std::size_t>(maxCount) < stride) return;
-    // Compression (or a ghost-rich corner) filled a row: widen every row and redo. Rare, and
-    // the stride never shrinks, so a run allocates only a handful of times.
-    // The first sizing leaves 1/8 spare (the lattice's own count plus the ghosts' corners).
-    const auto mc = static_cast<std::size_t>(maxCount);
-    list.stride = sizing && list.fixedPoints ? mc + 1  // the scan's one spare slot
-                  : sizing                     ? mc + mc / 8 + 2
-                                               : mc + mc / 4 + 4;
+    if (!overflow) return;
+    // Compression (or a ghost-rich corner) filled a row: lay the rows out again, every row at
+    // least a quarter + 4 above its count just found, and redo. A row's capacity never
+    // shrinks. Widening only the full rows was tried: the compressed region's front then
+    // filled a few new rows at nearly every step, and each such step built its list twice. The first sizing leaves 1/8 spare (the
+    // lattice's own count plus the ghosts' corners); fixed points need only the scan's one
+    // spare slot.
+    std::size_t offset = 0, widest = 0;
+    for (std::size_t i = 0; i < nReal; ++i) {
+      const auto c = static_cast<std::size_t>(count[i]);
+      const std::size_t old = start[i + 1] - start[i];
+      const std::size_t cap = sizing && list.fixedPoints ? c + 1
+                              : sizing                   ? c + c / 8 + 2
+                                                         : std::max(old, c + c / 4 + 4);
+      start[i] = offset;
+      offset += cap;
+      widest = std::max(widest, cap);
+    }
+    start[nReal] = offset;
+    list.stride = widest;
     sizing = false;
   }
 }
