@@ -83,6 +83,41 @@ TEST(Neighbours, ARowExactlyAsLongAsTheStrideKeepsItsLastNeighbour) {
   EXPECT_EQ(got, expect);
 }
 
+TEST(Neighbours, EachRowIsSizedByItsOwnCount) {
+  // A lattice with one compressed corner: the corner's rows are long, the others keep rows of
+  // their own length (a single stride for all rows made every row as long as the longest).
+  std::vector<double> x, z, h;
+  for (int i = 0; i < 30; ++i)
+    for (int k = 0; k < 30; ++k) {
+      // 100 points 0.002 apart off the lattice's corner: each sees the other 99.
+      const bool dense = i < 10 && k < 10;
+      x.push_back(dense ? i * 0.002 - 0.06 : i * 0.01);
+      z.push_back(dense ? k * 0.002 - 0.06 : k * 0.01);
+      h.push_back(0.01);
+    }
+  CellGrid grid;
+  NeighbourList list;
+  buildNeighbourList(x.data(), z.data(), h.data(), x.size(), x.size(), 3.3, grid, list);
+  ASSERT_EQ(list.start.size(), x.size() + 1);
+  int longest = 0;
+  for (int c : list.count) longest = std::max(longest, c);
+  std::size_t narrowest = list.stride, widest = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const std::size_t cap = list.start[i + 1] - list.start[i];
+    ASSERT_GT(cap, static_cast<std::size_t>(list.count[i])) << i;  // the scan's spare slot
+    narrowest = std::min(narrowest, cap);
+    widest = std::max(widest, cap);
+  }
+  EXPECT_EQ(list.stride, widest);  // the passes' scratch rows
+  EXPECT_GT(static_cast<std::size_t>(longest), narrowest);
+  EXPECT_EQ(longest, 99);
+  // The interior of the coarse lattice (~36 neighbours) holds far fewer slots than the
+  // compressed corner needs.
+  const std::size_t mid = 15 * 30 + 15;
+  EXPECT_LT(list.start[mid + 1] - list.start[mid], static_cast<std::size_t>(longest));
+  EXPECT_LT(list.start.back(), x.size() * list.stride);
+}
+
 TEST(Neighbours, RowsGrowWhenCompressed) {
   // 400 points in a box of side 0.02 with h = 0.02: everyone sees everyone (399 neighbours),
   // far more than the initial row stride.
