@@ -1,4 +1,7 @@
 //! @file The `hvi` command line: run, check, compare.
+#if __has_include(<malloc.h>)
+#include <malloc.h>  // mallopt (glibc)
+#endif
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -82,6 +85,15 @@ bool parseSolvers(const std::vector<std::string>& names, std::vector<hvi::cases:
 }  // namespace
 
 int main(int argc, char** argv) {
+#ifdef M_MMAP_THRESHOLD
+  // glibc raises its mmap threshold to the size of each large block freed (up to 32 MiB); the
+  // solvers' large arrays then come from the heap and fragment it as they are rebuilt: +120 B
+  // per SPH particle by step 50 of variant 2 (docs/performance.md, "SPH memory"). A fixed
+  // threshold keeps large arrays mapped and returned when freed; the heap's smaller blocks are
+  // kept (not trimmed and faulted in again at every step).
+  mallopt(M_MMAP_THRESHOLD, 256 * 1024);
+  mallopt(M_TRIM_THRESHOLD, 64 * 1024 * 1024);
+#endif
   CLI::App app{"hvi: hypervelocity impact with modified SPH and Eulerian TVD, and their comparison",
                "hvi"};
   app.set_version_flag("--version", std::string("hvi ") + HVI_VERSION);

@@ -98,7 +98,7 @@ void SphPairForce(benchmark::State& st) {
     for (std::size_t i = 0; i < b.n; ++i) {
       const sph::PairState a = b.state(i);
       double sx = 0.0, sz = 0.0, se = 0.0, sr = 0.0;
-      const std::size_t row = i * b.list.stride;
+      const std::size_t row = b.list.start[i];
       for (int k = 0; k < b.list.count[i]; ++k) {
         const auto j = static_cast<std::size_t>(b.list.index[row + k]);
         const sph::PairResult r = sph::pairTerms<sph::GaussianKernel, false, true>(
@@ -132,7 +132,7 @@ void SphPairForceFreshW(benchmark::State& st) {
     for (std::size_t i = 0; i < b.n; ++i) {
       const sph::PairState a = b.state(i);
       double sx = 0.0, sz = 0.0;
-      const std::size_t row = i * b.list.stride;
+      const std::size_t row = b.list.start[i];
       for (int k = 0; k < b.list.count[i]; ++k) {
         const auto j = static_cast<std::size_t>(b.list.index[row + k]);
         const sph::PairState bj = b.state(j);

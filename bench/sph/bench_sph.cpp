@@ -5,6 +5,9 @@
 //! both bodies) instead of the tension cut-off, for the cost ratio of docs/strength.md.
 //! Prints setup time (fill + mass iteration), steps, wall time and particle-updates per
 //! second per thread. Run with OMP_NUM_THREADS set to the cores to measure.
+#if __has_include(<malloc.h>)
+#include <malloc.h>  // mallopt (glibc)
+#endif
 #include <chrono>
 #include <ctime>
 #include <cstdio>
@@ -56,6 +59,15 @@ double seconds(std::chrono::steady_clock::time_point a) {
 }  // namespace
 
 int main(int argc, char** argv) {
+#ifdef M_MMAP_THRESHOLD
+  // glibc raises its mmap threshold to the size of each large block freed (up to 32 MiB); the
+  // solvers' large arrays then come from the heap and fragment it as they are rebuilt: +120 B
+  // per SPH particle by step 50 of variant 2 (docs/performance.md, "SPH memory"). A fixed
+  // threshold keeps large arrays mapped and returned when freed; the heap's smaller blocks are
+  // kept (not trimmed and faulted in again at every step).
+  mallopt(M_MMAP_THRESHOLD, 256 * 1024);
+  mallopt(M_TRIM_THRESHOLD, 64 * 1024 * 1024);
+#endif
   const double tEnd = argc > 1 ? std::atof(argv[1]) : 5.0;
   const long maxSteps = argc > 2 ? std::atol(argv[2]) : -1;
   const double spacing = argc > 3 ? std::atof(argv[3]) : 0.01;

@@ -43,9 +43,10 @@ void checkAxisymmetric(const TableReader& b, const Body& body, double tol) {
 }
 
 // Memory per work item, peak RSS against items (docs/performance.md, tools/bench_effects.py
-// --memory): ~1.7 KiB per SPH particle at the start of a run, ~2 KiB once compression widens the
-// neighbour rows (state, step arrays, and per neighbour slot, ~43 of them on variant 2's
-// lattice, 28 B: index, cached W and the compatible energy's pair data), ~100 B per TVD cell
+// --memory): ~600 B per SPH particle, the peak being the mass iteration's set-up (its list
+// caches W: 12 B per slot, ~30 slots) and the stepper's list holding indices only (4 B per slot,
+// ~42 slots on variant 2's lattice); ~1.3 KiB with strength, whose pass needs the compatible
+// energy's pair data stored (16 B more per slot) and its own per-particle arrays; ~100 B per TVD cell
 // (conserved state, 32 B, and a snapshot's fields, 56 B, at an output; the sweep buffers are per
 // line and thread: issue 17, measured 89 B marginal and 94-100 B per cell on 2-4 million cells),
 // ~390 B per TVD cell with marker lines and two bodies, ~490 B with three (about 100 B per body:
@@ -54,13 +55,15 @@ void checkAxisymmetric(const TableReader& b, const Body& body, double tol) {
 // caps keep a run near 12 GiB, under the 24 GiB of the machines this project targets, and keep
 // item counts far from integer overflow; a scene beyond them is refused before anything is
 // allocated.
-constexpr double kMaxParticles = 6e6;
+constexpr double kMaxParticles = 2e7;
+constexpr double kMaxParticlesWithStrength = 8e6;
 constexpr double kMaxCells = 1.2e8;
 constexpr double kMaxCellsWithMarkers = 2.5e7;
 
 void checkSize(const TableReader& root, const Scene& scene, const std::string& section,
                const std::string& key, const std::string& what, double h) {
-  const double cap = scene.solver == SolverKind::Sph                ? kMaxParticles
+  const double cap = scene.solver == SolverKind::Sph
+                         ? (scene.has(Effect::Strength) ? kMaxParticlesWithStrength : kMaxParticles)
                      : scene.has(Effect::MaterialInterfaces) ? kMaxCellsWithMarkers
                                                              : kMaxCells;
   const double items = estimatedWorkItems(scene);

@@ -68,8 +68,10 @@ void Boundaries::refreshGhosts(PairArrays& a, std::size_t n) const {
     const Transform& t = transform_[g];
     a.x[k] = t.sx * a.x[p] + t.ox;
     a.z[k] = t.sz * a.z[p] + t.oz;
-    a.vx[k] = t.sx * a.vx[p];
-    a.vz[k] = t.sz * a.vz[p];
+    if (!a.lean) {
+      a.vx[k] = t.sx * a.vx[p];
+      a.vz[k] = t.sz * a.vz[p];
+    }
     a.forEachCopied([k, p](auto& v) { v[k] = v[p]; });
   }
 }

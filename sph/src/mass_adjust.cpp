@@ -22,6 +22,7 @@ MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) 
   MassAdjustReport report;
   if (n == 0) return report;
   detail::PairArrays a;
+  a.lean = true;
   a.resize(n);
   double hmax = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -39,6 +40,7 @@ MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) 
   bounds.makeGhosts(a, n, support * hmax);
   CellGrid grid;
   NeighbourList list;
+  list.fixedPoints = true;
   detail::selectListPass(opt.kernel)(a, n, support, grid, list, nullptr);
 
   std::vector<double> rho(n), self(n);
@@ -64,8 +66,8 @@ MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) 
         if (!alive[i]) continue;
         const int obj = a.obj[i];
         double sum = a.mu[i] * self[i];
-        const int* nb = list.index.data() + i * list.stride;
-        const double* w = list.w.data() + i * list.stride;
+        const int* nb = list.index.data() + list.start[i];
+        const double* w = list.w.data() + list.start[i];
         for (int k = 0; k < list.count[i]; ++k) {
           const std::size_t j = static_cast<std::size_t>(nb[k]);
           if (a.obj[j] == obj) sum += a.mu[j] * w[k];

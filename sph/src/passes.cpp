@@ -20,28 +20,46 @@ inline PairState load(const PairArrays& a, std::size_t i) {
           a.h[i], a.mu[i], a.rw[i], a.q[i],  a.lam[i]};
 }
 
+// The compatible remainder of row i from its pair data wx, wz (compatibleEnergy), one
+// expression for the stored and the recomputed pair data (the same bits).
+inline void remainderRow(const int* nb, int cnt, const double* wx, const double* wz,
+                         std::size_t i, const double* dax, const double* daz, const double* rw,
+                         const double* hoopAx, double halfDt, double* de) {
+  const double dxi = dax[i], dzi = daz[i];
+  double s = 0.0;
+  for (int k = 0; k < cnt; ++k) {
+    const std::size_t j = static_cast<std::size_t>(nb[k]);
+    s += wx[k] * (dxi - dax[j]) + wz[k] * (dzi - daz[j]);
+  }
+  double corr = s / rw[i];
+  if (hoopAx) corr += hoopAx[i] * dxi;
+  de[i] -= halfDt * corr;
+}
+
 // Each particle gathers over its own list: a pair is evaluated from both ends, which doubles
 // the arithmetic but needs no atomics or per-thread copies, and makes every sum's order fixed
 // (bit-for-bit reproducible at any thread count).
 template <class K, bool RZ, bool Viscous, bool Cached, bool Compatible>
 void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
                const MonaghanViscosity& visc, const AxisCorrection* axis, const Rates& out) {
-  const std::size_t stride = list.stride;
   const long nr = static_cast<long>(nReal);
 #pragma omp parallel for schedule(static) if (nr > kParallelPairs)
   for (long il = 0; il < nr; ++il) {
     const std::size_t i = static_cast<std::size_t>(il);
     const PairState A = load(a, i);
-    const int* nb = list.index.data() + i * stride;
-    const double* wc = list.w.data() + i * stride;
+    const int* nb = list.index.data() + list.start[i];
+    // The state-n pass runs at the positions the list was built at: its cached W if it has
+    // them, else the same W recomputed.
+    const double* wc = Cached && list.cacheW ? list.w.data() + list.start[i] : nullptr;
     const int cnt = list.count[i];
     const int oi = a.obj[i];
     const double ih2i = 1.0 / (A.h * A.h);
     double sax = 0.0, saz = 0.0, sde = 0.0, sdrho = 0.0, shoop = 0.0, phi = 0.0;
     // The compatible energy's pair data (half state only): w_ij times i's pair acceleration.
     constexpr bool kPairs = Compatible && !Cached;
-    double* pwx = kPairs ? out.pairWx + i * stride : nullptr;
-    double* pwz = kPairs ? out.pairWz + i * stride : nullptr;
+    // Null pairWx: the remainder recomputes them (RemainderPass).
+    double* pwx = kPairs && out.pairWx ? out.pairWx + list.start[i] : nullptr;
+    double* pwz = kPairs && out.pairWx ? out.pairWz + list.start[i] : nullptr;
     for (int k = 0; k < cnt; ++k) {
       const std::size_t j = static_cast<std::size_t>(nb[k]);
       // Within an object h is constant, so h_ij = h_i for most pairs: skip the division.
@@ -52,20 +70,20 @@ void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list
         ih2 = 1.0 / (hij * hij);
       }
       double w;
-      if constexpr (Cached) {
+      if (Cached && wc) {
         w = wc[k];
       } else {
         const double dx = A.x - a.x[j], dz = A.z - a.z[j];
         w = K::value(dx * dx + dz * dz, 0.5 * (A.h + hj), ih2);
       }
       if (w == 0.0) {
-        if constexpr (kPairs) pwx[k] = pwz[k] = 0.0;
+        if (kPairs && pwx) pwx[k] = pwz[k] = 0.0;
         continue;
       }
       const PairResult r = pairTerms<K, RZ, Viscous, Compatible>(A, load(a, j), w, ih2, visc);
       sax += r.ax;
       saz += r.az;
-      if constexpr (kPairs) {
+      if (kPairs && pwx) {
         pwx[k] = r.share * r.ax;
         pwz[k] = r.share * r.az;
       }
@@ -134,11 +152,12 @@ void lanePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
     for (long il = 0; il < nr; ++il) {
       const std::size_t i = static_cast<std::size_t>(il);
       const int cnt = list.count[i];
-      if constexpr (kPairs) {
-        t.pwx = out.pairWx + i * stride;
-        t.pwz = out.pairWz + i * stride;
+      if (kPairs && out.pairWx) {
+        t.pwx = out.pairWx + list.start[i];
+        t.pwz = out.pairWz + list.start[i];
       }
-      kernel(la, i, list.index.data() + i * stride, Cached ? list.w.data() + i * stride : nullptr,
+      kernel(la, i, list.index.data() + list.start[i],
+             Cached && list.cacheW ? list.w.data() + list.start[i] : nullptr,
              cnt, visc.alpha, visc.beta, t);
       double sax = 0.0, saz = 0.0, sde = 0.0, sdrho = 0.0, shoop = 0.0, phi = 0.0;
       for (int k = 0; k < cnt; ++k) {
@@ -250,44 +269,151 @@ ForcePass selectForcePass(cases::Kernel kernel, bool rz, bool viscous, bool comp
 void compatibleEnergy(const NeighbourList& list, std::size_t nReal, const double* pairWx,
                       const double* pairWz, const double* dax, const double* daz, const double* rw,
                       const double* hoopAx, double halfDt, double* de) {
-  const std::size_t stride = list.stride;
   const long nr = static_cast<long>(nReal);
 #pragma omp parallel for schedule(static) if (nr > kParallelPairs)
   for (long il = 0; il < nr; ++il) {
     const std::size_t i = static_cast<std::size_t>(il);
-    const int* nb = list.index.data() + i * stride;
-    const double* wx = pairWx + i * stride;
-    const double* wz = pairWz + i * stride;
-    const double dxi = dax[i], dzi = daz[i];
-    double s = 0.0;
-    for (int k = 0; k < list.count[i]; ++k) {
-      const std::size_t j = static_cast<std::size_t>(nb[k]);
-      s += wx[k] * (dxi - dax[j]) + wz[k] * (dzi - daz[j]);
-    }
-    double corr = s / rw[i];
-    if (hoopAx) corr += hoopAx[i] * dxi;
-    de[i] -= halfDt * corr;
+    remainderRow(list.index.data() + list.start[i], list.count[i], pairWx + list.start[i],
+                 pairWz + list.start[i], i, dax, daz, rw, hoopAx, halfDt, de);
   }
 }
 
-void weightChange(const NeighbourList& list, std::size_t nReal, const int* obj, const double* h,
-                  const double* dmu, cases::Kernel kernel, double* rho) {
+namespace {
+
+// compatibleEnergy without stored pair data: each row's w_ij a_ij recomputed at the half state
+// (unchanged since the half-state pass) by that pass's own pair code into a scratch row, then
+// the same sum: the same bits as stored, at the price of a third pair pass.
+template <class K, bool RZ, bool Viscous>
+void scalarRemainder(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
+                     const MonaghanViscosity& visc, const double* dax, const double* daz,
+                     const double* hoopAx, double halfDt, double* de) {
   const std::size_t stride = list.stride;
+  const long nr = static_cast<long>(nReal);
+#pragma omp parallel if (nr > kParallelPairs)
+  {
+    std::vector<double> scratch(2 * stride);
+    double* pwx = scratch.data();
+    double* pwz = pwx + stride;
+#pragma omp for schedule(static)
+    for (long il = 0; il < nr; ++il) {
+      const std::size_t i = static_cast<std::size_t>(il);
+      const PairState A = load(a, i);
+      const int* nb = list.index.data() + list.start[i];
+      const int cnt = list.count[i];
+      const double ih2i = 1.0 / (A.h * A.h);
+      for (int k = 0; k < cnt; ++k) {  // as forcePass<..., Cached = false, Compatible = true>
+        const std::size_t j = static_cast<std::size_t>(nb[k]);
+        const double hj = a.h[j];
+        double ih2 = ih2i;
+        if (hj != A.h) {
+          const double hij = 0.5 * (A.h + hj);
+          ih2 = 1.0 / (hij * hij);
+        }
+        const double dx = A.x - a.x[j], dz = A.z - a.z[j];
+        const double w = K::value(dx * dx + dz * dz, 0.5 * (A.h + hj), ih2);
+        if (w == 0.0) {
+          pwx[k] = pwz[k] = 0.0;
+          continue;
+        }
+        const PairResult r = pairTerms<K, RZ, Viscous, true>(A, load(a, j), w, ih2, visc);
+        pwx[k] = r.share * r.ax;
+        pwz[k] = r.share * r.az;
+      }
+      remainderRow(nb, cnt, pwx, pwz, i, dax, daz, a.rw.data(), hoopAx, halfDt, de);
+    }
+  }
+}
+
+template <bool RZ, bool Viscous>
+void laneRemainder(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
+                   const MonaghanViscosity& visc, const double* dax, const double* daz,
+                   const double* hoopAx, double halfDt, double* de) {
+  static const RowKernel kernel = laneKernel(RZ, Viscous, false, true);
+  const LaneArrays la{a.x.data(),  a.z.data(), a.vx.data(), a.vz.data(), a.rho.data(),
+                      a.c.data(),  a.h.data(), a.mu.data(), a.rw.data(), a.q.data(),
+                      a.obj.data()};
+  const std::size_t stride = list.stride;
+  const std::size_t cap = (stride + 7) / 8 * 8;
+  const long nr = static_cast<long>(nReal);
+#pragma omp parallel if (nr > kParallelPairs)
+  {
+    std::vector<double> scratch(8 * cap);
+    double* s0 = scratch.data();
+    const RowTerms t{s0, s0 + cap, s0 + 2 * cap, s0 + 3 * cap,
+                     s0 + 4 * cap, s0 + 5 * cap, s0 + 6 * cap, s0 + 7 * cap};
+#pragma omp for schedule(static)
+    for (long il = 0; il < nr; ++il) {
+      const std::size_t i = static_cast<std::size_t>(il);
+      const int* nb = list.index.data() + list.start[i];
+      const int cnt = list.count[i];
+      kernel(la, i, nb, nullptr, cnt, visc.alpha, visc.beta, t);
+      remainderRow(nb, cnt, t.pwx, t.pwz, i, dax, daz, a.rw.data(), hoopAx, halfDt, de);
+    }
+  }
+}
+
+template <class K, bool RZ, bool Viscous>
+RemainderPass pickRemainder() {
+  if constexpr (std::is_same_v<K, GaussianKernel>)
+    if (laneWidth() >= 4) return &laneRemainder<RZ, Viscous>;
+  return &scalarRemainder<K, RZ, Viscous>;
+}
+
+template <class K>
+RemainderPass pickRemainder(bool rz, bool viscous) {
+  if (rz) return viscous ? pickRemainder<K, true, true>() : pickRemainder<K, true, false>();
+  return viscous ? pickRemainder<K, false, true>() : pickRemainder<K, false, false>();
+}
+
+}  // namespace
+
+RemainderPass selectRemainderPass(cases::Kernel kernel, bool rz, bool viscous) {
+  return kernel == cases::Kernel::Gaussian ? pickRemainder<GaussianKernel>(rz, viscous)
+                                           : pickRemainder<CubicSplineKernel>(rz, viscous);
+}
+
+namespace {
+template <class K>
+void weightChangeK(const NeighbourList& list, std::size_t nReal, const double* x0,
+                   const double* z0, const double* xg, const double* zg, const int* obj,
+                   const double* h, const double* dmu, double* rho) {
   const long nr = static_cast<long>(nReal);
 #pragma omp parallel for schedule(static) if (nr > kParallelPairs)
   for (long il = 0; il < nr; ++il) {
     const std::size_t i = static_cast<std::size_t>(il);
-    const int* nb = list.index.data() + i * stride;
-    const double* wc = list.w.data() + i * stride;
+    const int* nb = list.index.data() + list.start[i];
+    const double* wc = list.cacheW ? list.w.data() + list.start[i] : nullptr;
     const int oi = obj[i];
+    const double xi = x0[i], zi = z0[i], hi = h[i];
     // Over i's own object, as the summation density and the continuity rate.
-    double s = dmu[i] * kernelSelf(kernel, h[i]);
+    double s = dmu[i] * K::value(0.0, hi);
     for (int k = 0; k < list.count[i]; ++k) {
       const std::size_t j = static_cast<std::size_t>(nb[k]);
-      if (obj[j] == oi) s += dmu[j] * wc[k];
+      if (obj[j] != oi) continue;
+      double w;
+      if (wc) {
+        w = wc[k];
+      } else {
+        // W_ij at x^n as the list build computed it (the same operations, the same bits).
+        const double dx = xi - (j < nReal ? x0[j] : xg[j]);
+        const double dz = zi - (j < nReal ? z0[j] : zg[j]);
+        const double hij = 0.5 * (hi + h[j]);
+        w = K::value(dx * dx + dz * dz, hij, 1.0 / (hij * hij));
+      }
+      s += dmu[j] * w;
     }
     rho[i] += s;
   }
+}
+}  // namespace
+
+void weightChange(const NeighbourList& list, std::size_t nReal, const double* x0,
+                  const double* z0, const double* xg, const double* zg, const int* obj,
+                  const double* h, const double* dmu, cases::Kernel kernel, double* rho) {
+  if (kernel == cases::Kernel::Gaussian)
+    weightChangeK<GaussianKernel>(list, nReal, x0, z0, xg, zg, obj, h, dmu, rho);
+  else
+    weightChangeK<CubicSplineKernel>(list, nReal, x0, z0, xg, zg, obj, h, dmu, rho);
 }
 
 ListPass selectListPass(cases::Kernel kernel) {

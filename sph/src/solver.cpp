@@ -1,6 +1,8 @@
 //! @file The SPH solver: scene to particles, stepping, snapshots.
 #include "hvi/sph/sph.hpp"
 
+#include <type_traits>
+
 #include <fmt/format.h>
 
 #include "hvi/cases/effects.hpp"
@@ -85,30 +87,45 @@ SphSolver::SphSolver(const cases::Scene& scene, ParticleSystem ps) : scene_(scen
   materials_ = sceneMaterials(scene_);
   if (scene_.has(cases::Effect::MassAdjustment))
     massReport_ = adjustMasses(ps, massAdjustOptions(scene_));
-  stepper_ = std::make_unique<Stepper>(ps, materials_, stepperConfig(scene_));
+  stepper_ = std::make_unique<Stepper>(std::move(ps), materials_, stepperConfig(scene_));
 }
 
 Snapshot SphSolver::snapshot() const {
-  const ParticleSystem ps = stepper_->particles();
+  ParticleSystem ps = stepper_->particles();
+  const std::size_t np = ps.size();
   Snapshot s = makeSnapshot("sph", Snapshot::Kind::Particles, scene_.geometry, stepper_->time(),
                             stepper_->stepCount());
-  s.positions.resize(ps.size());
-  for (std::size_t i = 0; i < ps.size(); ++i) s.positions[i] = {ps.x[i], ps.z[i]};
+  // Each array of the copy is freed once its field holds it: the output's peak memory is one
+  // copy of the state, not two (docs/performance.md, "SPH memory").
+  const auto release = [](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); };
+  s.positions.resize(np);
+  for (std::size_t i = 0; i < np; ++i) s.positions[i] = {ps.x[i], ps.z[i]};
+  release(ps.x);
+  release(ps.z);
   using Q = Quantity;
   addField(s, Q::Density, ps.rho);
+  release(ps.rho);
   addField(s, Q::Pressure, ps.p);
+  release(ps.p);
   addField(s, Q::Velocity, ps.vx, ps.vz);
+  release(ps.vx);
+  release(ps.vz);
   addField(s, Q::SpecificEnergy, ps.e);
   addField(s, Q::SoundSpeed, ps.c);
+  release(ps.c);
   addField(s, Q::Mass, ps.m);
+  release(ps.m);
   addField(s, Q::Material, ps.material);
   addField(s, Q::Object, ps.object);
+  release(ps.object);
   addField(s, Q::SmoothingLength, ps.h);
+  release(ps.h);
   addField(s, Q::Id, ps.id);
+  release(ps.id);
   if (scene_.has(cases::Effect::PhaseBookkeeping)) {
-    Field frac = makeField(Q::VapourFraction, s.geometry, ps.size());
-    Field phase = makeField(Q::Phase, s.geometry, ps.size());
-    for (std::size_t i = 0; i < ps.size(); ++i) {
+    Field frac = makeField(Q::VapourFraction, s.geometry, np);
+    Field phase = makeField(Q::Phase, s.geometry, np);
+    for (std::size_t i = 0; i < np; ++i) {
       const eos::Eos& mat = materials_[static_cast<std::size_t>(ps.material[i])];
       const eos::PhaseState st = eos::phaseState(mat, ps.e[i]);
       frac.data[i] = st.vapourFraction;

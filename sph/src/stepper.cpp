@@ -1,6 +1,7 @@
 //! @file Predictor-corrector step driver (docs/sph.md).
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <numbers>
 
@@ -16,7 +17,7 @@ namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 }
 
-Stepper::Impl::Impl(const ParticleSystem& ps, std::vector<eos::Eos> mats, StepperConfig config)
+Stepper::Impl::Impl(ParticleSystem ps, std::vector<eos::Eos> mats, StepperConfig config)
     : cfg(std::move(config)), materials(std::move(mats)), bounds(cfg.domain, cfg.geometry) {
   rz = cfg.geometry == Geometry::Axisymmetric;
   if (rz) axis = std::make_unique<detail::AxisCorrection>(cfg.kernel);
@@ -24,6 +25,7 @@ Stepper::Impl::Impl(const ParticleSystem& ps, std::vector<eos::Eos> mats, Steppe
   passCached = detail::selectForcePass(cfg.kernel, rz, cfg.viscosity, compatible, true);
   passFresh = detail::selectForcePass(cfg.kernel, rz, cfg.viscosity, compatible, false);
   passList = detail::selectListPass(cfg.kernel);
+  passRemainder = detail::selectRemainderPass(cfg.kernel, rz, cfg.viscosity);
   if (!(cfg.cfl > 0.0)) throw InputError(fmt::format("sph.cfl = {} must be > 0", cfg.cfl));
   // A particle moves at most (cfl/2) h_i in the half step (dt <= cfl h_i / |v_i|), so a pair
   // closes by at most cfl h_ij: a skin of cfl h_ij (plus a margin for rounding) keeps the
@@ -35,7 +37,10 @@ Stepper::Impl::Impl(const ParticleSystem& ps, std::vector<eos::Eos> mats, Steppe
       throw InputError(
           fmt::format("particle material {} is not one of the {} materials", k, materials.size()));
   a.resize(n);
-  forEachState(*this, [&ps](auto member, auto& v) { v = ps.*member; });
+  // Indices only (docs/performance.md, "SPH memory"): the passes recompute W_ij.
+  list.cacheW = false;
+  forEachState(*this, [&ps](auto member, auto& v) { v = std::move(ps.*member); });
+  ps = ParticleSystem();  // rho, p, c: corrector() derives them
   if (!cfg.strength.empty()) {
     if (cfg.strength.size() != materials.size() || cfg.strengthRho0.size() != materials.size())
       throw InputError("SPH strength: one entry per material is needed");
@@ -44,6 +49,8 @@ Stepper::Impl::Impl(const ParticleSystem& ps, std::vector<eos::Eos> mats, Steppe
                                                        cfg.artificialStressPower, cfg.fracture);
     strength->resize(n);
   }
+  const char* store = std::getenv("HVI_SPH_STORE_PAIRS");
+  storePairs = compatible && (strength || (store && std::atoi(store) != 0));
   t = cfg.time;
   resizeWork();
   corrector();
@@ -130,8 +137,12 @@ void Stepper::Impl::compatibleRemainder(double half) {
     daz[i] = az1[i] - az0[i];
   }
   bounds.mirrorGhostVectors(dax.data(), daz.data(), n);
-  detail::compatibleEnergy(list, n, pairWx.data(), pairWz.data(), dax.data(), daz.data(),
-                           a.rw.data(), rz ? hoopAx.data() : nullptr, half, de1.data());
+  if (storePairs)
+    detail::compatibleEnergy(list, n, pairWx.data(), pairWz.data(), dax.data(), daz.data(),
+                             a.rw.data(), rz ? hoopAx.data() : nullptr, half, de1.data());
+  else
+    passRemainder(a, n, list, cfg.visc, dax.data(), daz.data(), rz ? hoopAx.data() : nullptr,
+                  half, de1.data());
 }
 
 double Stepper::Impl::particleTimeStep(std::size_t i, bool* byAcceleration) const {
@@ -211,6 +222,8 @@ void Stepper::Impl::removeOutflow() {
 
 Stepper::Stepper(const ParticleSystem& ps, std::vector<eos::Eos> materials, StepperConfig config)
     : impl_(std::make_unique<Impl>(ps, std::move(materials), std::move(config))) {}
+Stepper::Stepper(ParticleSystem&& ps, std::vector<eos::Eos> materials, StepperConfig config)
+    : impl_(std::make_unique<Impl>(std::move(ps), std::move(materials), std::move(config))) {}
 Stepper::~Stepper() = default;
 
 double Stepper::step(double tStop) {
@@ -263,8 +276,8 @@ double Stepper::step(double tStop) {
 #pragma omp parallel for schedule(static) if (nl > detail::kParallelElements)
     for (long i = 0; i < nl; ++i) s.dmu[i] = s.m[i] / (kTwoPi * std::abs(a.x[i])) - a.mu[i];
     s.bounds.copyGhostScalars(s.dmu.data(), s.n);
-    detail::weightChange(s.list, s.n, a.obj.data(), a.h.data(), s.dmu.data(), s.cfg.kernel,
-                         a.rho.data());
+    detail::weightChange(s.list, s.n, s.x0.data(), s.z0.data(), a.x.data(), a.z.data(),
+                         a.obj.data(), a.h.data(), s.dmu.data(), s.cfg.kernel, a.rho.data());
   }
   detail::evaluateEos(s.materials, s.mat.data(), a.rho.data(), s.e.data(), a.p.data(), a.c.data(),
                       s.n);
@@ -282,14 +295,19 @@ double Stepper::step(double tStop) {
   }
   detail::Rates ratesHalf{s.ax1.data(), s.az1.data(), s.de1.data(), nullptr, nullptr};
   if (s.compatible) {
-    // Grows only with the list's stride (set by the corrector's list build).
-    const std::size_t entries = s.n * s.list.stride;
-    if (s.pairWx.size() < entries) {
-      s.pairWx.resize(entries);
-      s.pairWz.resize(entries);
+    if (s.storePairs) {
+      // One entry per list slot (rows as the corrector's list build laid them out).
+      const std::size_t entries = s.list.start[s.n];
+      if (s.pairWx.size() < entries) {
+        // Rewritten by the pass: freed first, not copied into the larger arrays.
+        s.pairWx = std::vector<double>();
+        s.pairWz = std::vector<double>();
+        s.pairWx.resize(entries);
+        s.pairWz.resize(entries);
+      }
+      ratesHalf.pairWx = s.pairWx.data();
+      ratesHalf.pairWz = s.pairWz.data();
     }
-    ratesHalf.pairWx = s.pairWx.data();
-    ratesHalf.pairWz = s.pairWz.data();
     ratesHalf.hoopAx = s.rz ? s.hoopAx.data() : nullptr;
   }
   s.passFresh(a, s.n, s.list, s.cfg.visc, s.axis.get(), ratesHalf);

@@ -30,7 +30,6 @@ void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& li
                  const StressPoints& p, const double* sxx, const double* szz, const double* sxz,
                  const double* g, double hFactor, int power, const AxisCorrection* axis,
                  const Rates& out, const StressRates& rs) {
-  const std::size_t stride = list.stride;
   const long nr = static_cast<long>(nReal);
   const double q2dp = 1.0 / (hFactor * hFactor);  // (dp / h)^2
 #pragma omp parallel for schedule(static) if (nr > kParallelPairs)
@@ -38,13 +37,15 @@ void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& li
     const std::size_t i = static_cast<std::size_t>(il);
     const double xi = a.x[i], zi = a.z[i], vxi = a.vx[i], vzi = a.vz[i], hi = a.h[i];
     const Sym2 ti{p.txx[i], p.tzz[i], p.txz[i]}, ri{p.rxx[i], p.rzz[i], p.rxz[i]};
-    const int* nb = list.index.data() + i * stride;
-    const double* wc = list.w.data() + i * stride;
+    const int* nb = list.index.data() + list.start[i];
+    // The state-n pass runs at the list's positions: cached W if the list has them, else the
+    // same W recomputed.
+    const double* wc = Cached && list.cacheW ? list.w.data() + list.start[i] : nullptr;
     const int cnt = list.count[i];
     const double ih2i = 1.0 / (hi * hi);
     const double wdpi = K::value(q2dp * hi * hi, hi, ih2i);
-    double* pwx = Pairs ? out.pairWx + i * stride : nullptr;
-    double* pwz = Pairs ? out.pairWz + i * stride : nullptr;
+    double* pwx = Pairs ? out.pairWx + list.start[i] : nullptr;
+    double* pwz = Pairs ? out.pairWz + list.start[i] : nullptr;
     double gxx = 0.0, gxz = 0.0, gzx = 0.0, gzz = 0.0;
     double sax = 0.0, saz = 0.0, sde = 0.0, shoop = 0.0;
     for (int k = 0; k < cnt; ++k) {
@@ -59,7 +60,7 @@ void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& li
       const double dx = xi - a.x[j], dz = zi - a.z[j];
       const double r2 = dx * dx + dz * dz;
       double w;
-      if constexpr (Cached) {
+      if (Cached && wc) {
         w = wc[k];
       } else {
         w = K::value(r2, hij, ih2);

@@ -26,10 +26,11 @@ struct RowTerms {
   double* drho;  //!< cached pass: mu_j v_ij . grad W over i's own object, else 0
   double* hoop;  //!< r-z: mu_j q_j W_ij
   double* phi;   //!< cached viscous pass: phi_ij (<= 0)
-  double *pwx, *pwz;  //!< compatible half-state pass: w_ij times the pair acceleration
+  double *pwx, *pwz;  //!< compatible half-state pass: w_ij times the pair acceleration (or null)
 };
 
-//! Terms of row i: `nb` its cnt neighbours, `wc` their cached W (cached pass) or null.
+//! Terms of row i: `nb` its cnt neighbours, `wc` their cached W (cached pass, when the list
+//! holds them) or null (W from the positions: the same bits where the list was built there).
 using RowKernel = void (*)(const LaneArrays& a, std::size_t i, const int* nb, const double* wc,
                            int cnt, double alpha, double beta, const RowTerms& out);
 

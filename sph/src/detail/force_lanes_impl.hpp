@@ -93,7 +93,7 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
     const D ih2 = anyLane(hj != hi) ? 1.0 / (hij * hij) : ih2i;
     const D q2 = r2 * ih2;
     D w;
-    if constexpr (Cached) {
+    if (Cached && wc) {
       if (k + L <= cnt)
         __builtin_memcpy(&w, wc + k, sizeof w);
       else
@@ -134,7 +134,8 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
     if constexpr (Compatible) {
       const D ka = qi + halfPi, kb = qj + halfPi;
       de = muj * ka * vdg;
-      if constexpr (kPairs) {
+      // Null pwx: the remainder recomputes them (passes.hpp, RemainderPass); no share then.
+      if (kPairs && out.pwx) {
         const D s = vabs(ka) + vabs(kb);
         const I pos = s > 0.0;
         const D share = select(pos, vabs(ka) / select(pos, s, splat(1.0)), splat(0.5));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <type_traits>
 #include <cstddef>
+#include <vector>
 
 #include "detail/force_lanes.hpp"
 #include "detail/parallel.hpp"
@@ -12,7 +13,7 @@
 namespace hvi::sph::detail {
 
 //! Lists, for each real particle i < nReal, the points j != i (real or ghost) closer than
-//! radiusFactor * h_ij, caching W_ij (0 beyond the kernel support). With `Density`, also
+//! radiusFactor * h_ij, caching W_ij (0 beyond the kernel support) if list.cacheW. With `Density`, also
 //! rho_i = mu_i W_ii + sum_j mu_j W_ij (docs/sph.md (5)) over i's own object (`obj` may be null
 //! without `Density`). Each row is written by one thread in a fixed order, so the result does
 //! not depend on the thread count.
@@ -33,32 +34,52 @@ void buildList(const double* x, const double* z, const double* h, const double* 
   const double* sh = grid.sortedH();
   const int nx = grid.nx(), nz = grid.nz();
   list.count.resize(nReal);
-  // A new list is sized by a first pass that only counts (every row overflows a stride of
-  // one), so its rows are as long as the lattice needs, not a fixed guess.
-  bool sizing = list.stride == 0;
-  if (sizing) list.stride = 1;
+  // A new list, or one whose particles changed in number (outflow), is sized by a first pass
+  // that only counts (every row overflows a capacity of one), so its rows are as long as the
+  // lattice needs, not a fixed guess.
+  std::vector<std::size_t>& start = list.start;
+  bool sizing = start.size() != nReal + 1;
+  if (sizing) {
+    start.resize(nReal + 1);
+    for (std::size_t i = 0; i <= nReal; ++i) start[i] = i;
+    list.stride = 1;
+  }
   for (;;) {
     const std::size_t stride = list.stride;
-    if (list.index.size() < nReal * stride) {
-      list.index.resize(nReal * stride);
-      list.w.resize(nReal * stride);
+    const std::size_t total = start[nReal];
+    const bool cacheW = list.cacheW;
+    if (list.index.size() < total) {
+      // The rows are rewritten: the old ones are freed first, so that a wider list does not
+      // hold both for a moment (that moment was a run's peak memory).
+      list.index = std::vector<int>();
+      list.w = std::vector<double>();
+      list.index.resize(total);
+      if (cacheW) list.w.resize(total);
     }
+    if (!cacheW) list.w = std::vector<double>();
     int* index = list.index.data();
-    double* wc = list.w.data();
+    double* wc = cacheW ? list.w.data() : nullptr;
+    // Without the cache the W of a row live in a scratch row per thread (the density needs
+    // them once); with neither the cache nor the density they are not computed.
+    const bool needW = cacheW || Density;
     int* count = list.count.data();
-    int maxCount = 0;
+    int overflow = 0;
     const long nr = static_cast<long>(nReal);
     const double rf2 = radiusFactor * radiusFactor;
     const ScanKernel scan = scanKernel();
     // 2 lanes (no AVX2) measured slower than the one-candidate-at-a-time loop with its branch
     // (docs/performance.md): that loop, then; the same pairs, W and densities.
     const bool lanes = laneWidth() >= 4;
-#pragma omp parallel for schedule(static) if (nr > kParallelPairs) reduction(max : maxCount)
+#pragma omp parallel if (nr > kParallelPairs)
+  {
+    std::vector<double> scratch(cacheW || !needW ? 0 : stride);
+#pragma omp for schedule(static) reduction(max : overflow)
     for (long il = 0; il < nr; ++il) {
       const std::size_t i = static_cast<std::size_t>(il);
       const double xi = x[i], zi = z[i], hi = h[i];
       const int cx = grid.cellX(xi), cz = grid.cellZ(zi);
-      const std::size_t base = i * stride;
+      const std::size_t base = start[i];
+      const int capacity = static_cast<int>(start[i + 1] - base);
       if (!lanes) {
         const double ih2i = 1.0 / (hi * hi), radi2 = rf2 * hi * hi;
         int cnt = 0;
@@ -80,9 +101,9 @@ void buildList(const double* x, const double* z, const double* h, const double* 
             }
             if (r2 >= rad2) continue;
             const double w = K::value(r2, hij, ih2);
-            if (cnt < static_cast<int>(stride)) {
+            if (cnt < capacity) {
               index[base + static_cast<std::size_t>(cnt)] = j;
-              wc[base + static_cast<std::size_t>(cnt)] = w;
+              if (cacheW) wc[base + static_cast<std::size_t>(cnt)] = w;
             }
             ++cnt;
             if constexpr (Density) {
@@ -91,13 +112,13 @@ void buildList(const double* x, const double* z, const double* h, const double* 
           }
         }
         count[i] = cnt;
-        maxCount = std::max(maxCount, cnt);
+        if (cnt >= capacity) overflow = 1;
         if constexpr (Density) rho[i] = sum;
         continue;
       }
       int* slot = index + base;
-      double* wr = wc + base;  // the Gaussian's W come with the scan
-      const int last = static_cast<int>(stride) - 1;
+      double* wr = cacheW ? wc + base : scratch.data();  // the Gaussian's W come with the scan
+      const int last = capacity - 1;
       // Pass 1, without a branch on the distance: every candidate's sorted position is written
       // at the row's end and kept (the end advances) if it is within radiusFactor * h_ij. So a
       // row needs one spare slot; once the row is full the last slot is overwritten and the
@@ -108,14 +129,16 @@ void buildList(const double* x, const double* z, const double* h, const double* 
         const int s1 = grid.begin(row * nx + std::min(cx + kReach, nx - 1) + 1);
         // h_ij = h_i bit for bit when h_j = h_i (then the radius is radiusFactor h_i).
         cnt = scan(sx, sz, sh, order, s0, s1, xi, zi, hi, rf2, static_cast<int>(i), slot,
-                   kGauss ? wr : nullptr, cnt, last);
+                   kGauss && needW ? wr : nullptr, cnt, last);
       }
       count[i] = cnt;
-      maxCount = std::max(maxCount, cnt);
-      if (cnt > last) continue;  // no spare slot: redone with a wider stride
+      if (cnt > last) {  // no spare slot: redone with a wider row
+        overflow = 1;
+        continue;
+      }
       // Pass 2: W_ij of the kept pairs (the Gaussian's came with the scan), then the sorted
       // positions become point indices and the density adds up in the order the pairs were found.
-      if constexpr (!kGauss) {
+      if (!kGauss && needW) {
         for (int k = 0; k < cnt; ++k) {
           const int s = slot[k];
           const double dx = xi - sx[s], dz = zi - sz[s];
@@ -134,12 +157,27 @@ void buildList(const double* x, const double* z, const double* h, const double* 
       }
       if constexpr (Density) rho[i] = sum;
     }
-    if (static_cast<std::size_t>(maxCount) < stride) return;
-    // Compression (or a ghost-rich corner) filled a row: widen every row and redo. Rare, and
-    // the stride never shrinks, so a run allocates only a handful of times.
-    // The first sizing leaves 1/8 spare (the lattice's own count plus the ghosts' corners).
-    const auto mc = static_cast<std::size_t>(maxCount);
-    list.stride = sizing ? mc + mc / 8 + 2 : mc + mc / 4 + 4;
+  }
+    if (!overflow) return;
+    // Compression (or a ghost-rich corner) filled a row: lay the rows out again, every row at
+    // least a quarter + 4 above its count just found, and redo. A row's capacity never
+    // shrinks. Widening only the full rows was tried: the compressed region's front then
+    // filled a few new rows at nearly every step, and each such step built its list twice. The first sizing leaves 1/8 spare (the
+    // lattice's own count plus the ghosts' corners); fixed points need only the scan's one
+    // spare slot.
+    std::size_t offset = 0, widest = 0;
+    for (std::size_t i = 0; i < nReal; ++i) {
+      const auto c = static_cast<std::size_t>(count[i]);
+      const std::size_t old = start[i + 1] - start[i];
+      const std::size_t cap = sizing && list.fixedPoints ? c + 1
+                              : sizing                   ? c + c / 8 + 2
+                                                         : std::max(old, c + c / 4 + 4);
+      start[i] = offset;
+      offset += cap;
+      widest = std::max(widest, cap);
+    }
+    start[nReal] = offset;
+    list.stride = widest;
     sizing = false;
   }
 }

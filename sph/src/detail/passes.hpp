@@ -49,12 +49,24 @@ void compatibleEnergy(const NeighbourList& list, std::size_t nReal, const double
                       const double* pairWz, const double* dax, const double* daz, const double* rw,
                       const double* hoopAx, double halfDt, double* de);
 
+//! compatibleEnergy with the pair data recomputed row by row from the half state (which must
+//! be unchanged since the half-state pass) instead of stored: the same bits, no per-entry
+//! storage (16 B per list slot), one more pair pass. Not with strength (its pass adds its own
+//! pair data to the stored ones).
+using RemainderPass = void (*)(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
+                               const MonaghanViscosity& visc, const double* dax,
+                               const double* daz, const double* hoopAx, double halfDt,
+                               double* de);
+RemainderPass selectRemainderPass(cases::Kernel kernel, bool rz, bool viscous);
+
 //! r-z predictor (docs/sph-rz.md, "Density"): adds to rho_i the change of the summation
 //! density through the ring weights alone, sum_j dmu_j W_ij over i's own object (j = i
 //! included), with dmu = mu^{n+1/2} - mu^n on every point (ghosts as their parents) and the
-//! W_ij cached by the list build at x^n.
-void weightChange(const NeighbourList& list, std::size_t nReal, const int* obj, const double* h,
-                  const double* dmu, cases::Kernel kernel, double* rho);
+//! W_ij of the list build at x^n: cached by it, or recomputed from x0, z0 (the reals at x^n)
+//! and xg, zg (the ghosts, indices >= nReal, still at x^n: refreshed after this).
+void weightChange(const NeighbourList& list, std::size_t nReal, const double* x0,
+                  const double* z0, const double* xg, const double* zg, const int* obj,
+                  const double* h, const double* dmu, cases::Kernel kernel, double* rho);
 
 //! Builds the neighbour lists of the real particles among the a.size() points and, if
 //! `rhoOut` is not null, the summation density of the real particles into it (over the

@@ -14,7 +14,7 @@
 namespace hvi::sph {
 
 struct Stepper::Impl {
-  Impl(const ParticleSystem& ps, std::vector<eos::Eos> materials, StepperConfig config);
+  Impl(ParticleSystem ps, std::vector<eos::Eos> materials, StepperConfig config);
 
   void corrector();          // ghosts, list, summation density, EOS, derived values
   void deriveWeights();      // rw, mu of the reals from their positions and masses
@@ -61,12 +61,17 @@ struct Stepper::Impl {
   std::vector<eos::Eos> materials;
   detail::ForcePass passCached = nullptr, passFresh = nullptr;
   detail::ListPass passList = nullptr;
+  detail::RemainderPass passRemainder = nullptr;  // compatible, pair data not stored
   detail::Boundaries bounds;
   std::unique_ptr<detail::AxisCorrection> axis;  // r-z only
   std::unique_ptr<detail::StrengthModel> strength;  // effect strength only
   double radiusFactor = 0.0;   // list radius / h_ij: kernel support + skin
   bool rz = false;
   bool compatible = false;     // cfg.energy == Compatible
+  // Compatible: the half-state pass stores its pair data (16 B per list slot) for the
+  // remainder, instead of the remainder recomputing them (with strength, whose pass adds to
+  // them, always; else only with HVI_SPH_STORE_PAIRS=1: docs/performance.md, "SPH memory").
+  bool storePairs = false;
 
   std::size_t n = 0;           // real particles
   detail::PairArrays a;        // reals, then ghosts

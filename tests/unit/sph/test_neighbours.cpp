@@ -37,11 +37,11 @@ TEST(Neighbours, SameSetsAsBruteForceWithMixedSmoothingLengths) {
       const double rad = rf * 0.5 * (h[i] + h[j]);
       if (r2 < rad * rad) expect.push_back(static_cast<int>(j));
     }
-    std::vector<int> got(list.index.begin() + static_cast<long>(i * list.stride),
-                         list.index.begin() + static_cast<long>(i * list.stride) + list.count[i]);
+    std::vector<int> got(list.index.begin() + static_cast<long>(list.start[i]),
+                         list.index.begin() + static_cast<long>(list.start[i]) + list.count[i]);
     // The cached W_ij (the build computes them in vector lanes): kernel.hpp's value bit for bit.
     for (int k = 0; k < list.count[i]; ++k) {
-      const std::size_t e = i * list.stride + static_cast<std::size_t>(k);
+      const std::size_t e = list.start[i] + static_cast<std::size_t>(k);
       const auto j = static_cast<std::size_t>(list.index[e]);
       const double r2 = (x[i] - x[j]) * (x[i] - x[j]) + (z[i] - z[j]) * (z[i] - z[j]);
       ASSERT_EQ(list.w[e], GaussianKernel::value(r2, 0.5 * (h[i] + h[j]))) << i << " " << j;
@@ -67,6 +67,7 @@ TEST(Neighbours, ARowExactlyAsLongAsTheStrideKeepsItsLastNeighbour) {
     }
   CellGrid grid;
   NeighbourList list;
+  list.start = {0, 8};  // one row of capacity 8
   list.stride = 8;
   const std::size_t centre = 24;
   std::swap(x[0], x[centre]);  // the centre becomes the one real point
@@ -80,6 +81,41 @@ TEST(Neighbours, ARowExactlyAsLongAsTheStrideKeepsItsLastNeighbour) {
     if (std::abs(x[j] - x[0]) < 0.011 && std::abs(z[j] - z[0]) < 0.011)
       expect.push_back(static_cast<int>(j));
   EXPECT_EQ(got, expect);
+}
+
+TEST(Neighbours, EachRowIsSizedByItsOwnCount) {
+  // A lattice with one compressed corner: the corner's rows are long, the others keep rows of
+  // their own length (a single stride for all rows made every row as long as the longest).
+  std::vector<double> x, z, h;
+  for (int i = 0; i < 30; ++i)
+    for (int k = 0; k < 30; ++k) {
+      // 100 points 0.002 apart off the lattice's corner: each sees the other 99.
+      const bool dense = i < 10 && k < 10;
+      x.push_back(dense ? i * 0.002 - 0.06 : i * 0.01);
+      z.push_back(dense ? k * 0.002 - 0.06 : k * 0.01);
+      h.push_back(0.01);
+    }
+  CellGrid grid;
+  NeighbourList list;
+  buildNeighbourList(x.data(), z.data(), h.data(), x.size(), x.size(), 3.3, grid, list);
+  ASSERT_EQ(list.start.size(), x.size() + 1);
+  int longest = 0;
+  for (int c : list.count) longest = std::max(longest, c);
+  std::size_t narrowest = list.stride, widest = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const std::size_t cap = list.start[i + 1] - list.start[i];
+    ASSERT_GT(cap, static_cast<std::size_t>(list.count[i])) << i;  // the scan's spare slot
+    narrowest = std::min(narrowest, cap);
+    widest = std::max(widest, cap);
+  }
+  EXPECT_EQ(list.stride, widest);  // the passes' scratch rows
+  EXPECT_GT(static_cast<std::size_t>(longest), narrowest);
+  EXPECT_EQ(longest, 99);
+  // The interior of the coarse lattice (~36 neighbours) holds far fewer slots than the
+  // compressed corner needs.
+  const std::size_t mid = 15 * 30 + 15;
+  EXPECT_LT(list.start[mid + 1] - list.start[mid], static_cast<std::size_t>(longest));
+  EXPECT_LT(list.start.back(), x.size() * list.stride);
 }
 
 TEST(Neighbours, RowsGrowWhenCompressed) {

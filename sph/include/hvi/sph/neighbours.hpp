@@ -33,15 +33,24 @@ class CellGrid {
   std::vector<double> sx_, sz_, sh_;
 };
 
-//! Neighbours of each real particle i in slots [i * stride, i * stride + count[i]) (a CSR
-//! with a fixed row stride, so the rows are filled in parallel without a counting pass; the
-//! stride grows when a row overflows). With each neighbour the kernel value W_ij found when the
-//! list was built, so that the first force pass of a step needs no exponential.
+//! Neighbours of each real particle i in slots [start[i], start[i] + count[i]), its row's
+//! capacity start[i + 1] - start[i] (a CSR with spare slots per row, so the rows are filled in
+//! parallel without a counting pass; a row that overflows is widened, alone, and the list
+//! redone). The capacities follow each row's own count: one compressed particle does not widen
+//! every row. With `cacheW`, with each neighbour the kernel value W_ij
+//! found when the list was built (the mass iteration reuses it over many sweeps); the stepper's
+//! list holds only the indices (4 B per slot instead of 12) and its passes recompute W_ij from
+//! the positions, the same bits (docs/performance.md, "SPH memory").
 struct NeighbourList {
-  std::size_t stride = 0;
+  std::vector<std::size_t> start;  //!< nReal + 1 row offsets
+  std::size_t stride = 0;          //!< the largest row capacity (scratch rows of the passes)
+  bool cacheW = true;
+  //! The points never move while the list is used (the mass iteration): a new list's rows are
+  //! sized to the longest row exactly instead of with room for compression.
+  bool fixedPoints = false;
   std::vector<int> count;
   std::vector<int> index;
-  std::vector<double> w;
+  std::vector<double> w;  //!< empty without cacheW
 };
 
 //! Brute-force-checkable entry point: lists, for the first `nReal` of `n` points, every other

@@ -63,6 +63,8 @@ class Stepper {
   //! Takes masses as given (traditional, or from adjustMasses) and runs the corrector once to
   //! set rho, P, c at t = config.time. `materials` is indexed by ps.material.
   Stepper(const ParticleSystem& ps, std::vector<eos::Eos> materials, StepperConfig config);
+  //! The same taking ps's arrays over (no copy of them at the peak of a run's set-up).
+  Stepper(ParticleSystem&& ps, std::vector<eos::Eos> materials, StepperConfig config);
   ~Stepper();
   Stepper(const Stepper&) = delete;
   Stepper& operator=(const Stepper&) = delete;
