@@ -50,6 +50,7 @@ StepperConfig stepperConfig(const cases::Scene& scene) {
   cfg.viscosity = scene.has(cases::Effect::ArtificialViscosity);
   cfg.visc = {scene.sph.alpha, scene.sph.beta};
   cfg.energy = scene.sph.energy;
+  cfg.rzForm = scene.sph.rzForm;
   cfg.cfl = scene.sph.cfl;
   cfg.domain = scene.domain;
   cfg.time = scene.tStart;
@@ -71,6 +72,7 @@ MassAdjustOptions massAdjustOptions(const cases::Scene& scene) {
   MassAdjustOptions opt;
   opt.geometry = scene.geometry;
   opt.kernel = scene.sph.kernel;
+  opt.rzForm = scene.sph.rzForm;
   opt.domain = scene.domain;
   opt.tolerance = scene.sph.massTolerance;
   opt.deleteFraction = scene.sph.deleteFraction;
