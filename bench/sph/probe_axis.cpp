@@ -44,12 +44,12 @@ int main(int argc, char** argv) {
           bid = p.id[i];
     }
     std::printf("%s rz_form %s: fastest along -z %.4f cm/us (id %ld body %d at r = %.4f, z = %.3f, t = %.3f us), %ld steps\n",
-                path.c_str(), scene.sph.rzForm == cases::RzForm::Symmetric ? "symmetric" : "ring", best, bid, bo, bx, bz, bt, solver.step());
+                path.c_str(), sph::stepperConfig(scene).rzForm == cases::RzForm::Symmetric ? "symmetric" : "ring", best, bid, bo, bx, bz, bt, solver.step());
     return 0;
   }
   std::map<long, Acc> acc;  // by id: integrated dv_z
   using K = sph::GaussianKernel;
-  const bool sym = scene.sph.rzForm == cases::RzForm::Symmetric;
+  const bool sym = sph::stepperConfig(scene).rzForm == cases::RzForm::Symmetric;
   const auto& ring = sph::detail::ringScale(scene.sph.kernel);
   for (long s = 0; s < nsteps; ++s) {
     const sph::ParticleSystem p = solver.stepper().particles();

@@ -41,9 +41,10 @@ constexpr std::array<KeyRow<SphParams>, 14> kSph{{
     // docs/sph-rz.md: the ring form (hvi's first r-z SPH) stays available for reproduction.
     {.key = "rz_form", .kind = K::Choice, HVI_KEY_FIELD(SphParams, rzForm),
      .choices = rzFormNames,
-     .docValue = "`\"ring\"` (r_j weights, hoop correction C), `\"symmetric\"` (pair weights "
-                 "r_j / (s_i s_j), axially consistent at the axis)",
-     .docDefault = "`\"ring\"`"},
+     .docValue = "`\"auto\"` (symmetric; ring with strength), `\"symmetric\"` (pair weights "
+                 "r_j / (s_i s_j), axially consistent at the axis), `\"ring\"` (r_j weights, "
+                 "hoop correction C; docs/sph-rz.md)",
+     .docDefault = "`\"auto\"`"},
     {.key = "alpha", .kind = K::Number, HVI_KEY_FIELD(SphParams, alpha),
      .ok = [](double v) { return v >= 0.0; }, .problem = "must be >= 0", .allowed = "alpha >= 0",
      .docValue = ">= 0, Monaghan viscosity alpha_Pi", .docDefault = "1.0"},

@@ -13,7 +13,7 @@ constexpr std::array<std::string_view, 2> kLattices{"square", "hexagonal"};
 constexpr std::array<std::string_view, 3> kLimiters{"minmod", "van_leer", "superbee"};
 constexpr std::array<std::string_view, 2> kInterfaces{"whole_cell", "conservative"};
 constexpr std::array<std::string_view, 2> kEnergyForms{"compatible", "symmetric"};
-constexpr std::array<std::string_view, 2> kRzForms{"ring", "symmetric"};
+constexpr std::array<std::string_view, 3> kRzForms{"auto", "ring", "symmetric"};
 
 template <class E, std::size_t N>
 std::string_view nameOf(const std::array<std::string_view, N>& names, E e) {

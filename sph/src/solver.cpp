@@ -35,6 +35,12 @@ ParticleSystem filledBodies(const cases::Scene& scene) {
   return fillBodies(scene);
 }
 
+// docs/sph-rz.md, "Which form": the symmetric form where it is implemented (not with strength).
+cases::RzForm resolvedRzForm(const cases::Scene& scene) {
+  if (scene.sph.rzForm != cases::RzForm::Auto) return scene.sph.rzForm;
+  return scene.has(cases::Effect::Strength) ? cases::RzForm::Ring : cases::RzForm::Symmetric;
+}
+
 }  // namespace
 
 std::vector<eos::Eos> sceneMaterials(const cases::Scene& scene) {
@@ -50,7 +56,7 @@ StepperConfig stepperConfig(const cases::Scene& scene) {
   cfg.viscosity = scene.has(cases::Effect::ArtificialViscosity);
   cfg.visc = {scene.sph.alpha, scene.sph.beta};
   cfg.energy = scene.sph.energy;
-  cfg.rzForm = scene.sph.rzForm;
+  cfg.rzForm = resolvedRzForm(scene);
   cfg.cfl = scene.sph.cfl;
   cfg.domain = scene.domain;
   cfg.time = scene.tStart;
@@ -72,7 +78,7 @@ MassAdjustOptions massAdjustOptions(const cases::Scene& scene) {
   MassAdjustOptions opt;
   opt.geometry = scene.geometry;
   opt.kernel = scene.sph.kernel;
-  opt.rzForm = scene.sph.rzForm;
+  opt.rzForm = resolvedRzForm(scene);
   opt.domain = scene.domain;
   opt.tolerance = scene.sph.massTolerance;
   opt.deleteFraction = scene.sph.deleteFraction;

@@ -108,8 +108,9 @@ enum class Lattice { Square, Hexagonal };
 enum class EnergyForm { Compatible, Symmetric };
 //! r-z SPH ring weights (docs/sph-rz.md): the ring form (neighbour radius r_j, hoop term with
 //! the axis correction C) or the symmetric form (weight |r_j| / (s_i s_j), consistent at the
-//! axis in the axial direction too).
-enum class RzForm { Ring, Symmetric };
+//! axis in the axial direction too). Auto: symmetric, ring with the effect strength (whose
+//! stress terms exist for the ring form only).
+enum class RzForm { Auto, Ring, Symmetric };
 
 struct SphParams {
   double spacing = 0.01;   //!< particle spacing dx, cm
@@ -117,7 +118,7 @@ struct SphParams {
   Kernel kernel = Kernel::Gaussian;
   Lattice lattice = Lattice::Square;
   EnergyForm energy = EnergyForm::Compatible;
-  RzForm rzForm = RzForm::Ring;
+  RzForm rzForm = RzForm::Auto;
   double alpha = 1.0;      //!< Monaghan alpha_Pi
   double beta = 2.0;       //!< Monaghan beta_Pi
   double cfl = 0.3;
