@@ -24,6 +24,11 @@ void validate(const cases::Scene& scene) {
         "{}: SPH in rz geometry needs domain xmin = 0 with boundary 'axis' (got xmin = {})",
         scene.path, scene.domain.xmin));
   if (scene.bodies.empty()) throw InputError(scene.path + ": SPH: the scene has no bodies");
+  if (scene.geometry == Geometry::Axisymmetric && scene.sph.rzForm == cases::RzForm::Symmetric &&
+      scene.has(cases::Effect::Strength))
+    throw InputError(scene.path +
+                     ": sph.rz_form = \"symmetric\" is not implemented with the effect strength "
+                     "(docs/sph-rz.md); allowed with strength: \"auto\" or \"ring\"");
   if (!(scene.sph.alpha >= 0.0) || !(scene.sph.beta >= 0.0))
     throw InputError(fmt::format("{}: sph.alpha = {} and sph.beta = {} must be >= 0", scene.path,
                                  scene.sph.alpha, scene.sph.beta));
