@@ -21,7 +21,7 @@ constexpr std::array<KeyRow<Scene>, 2> kTime{{
      .docValue = "**required**, time > start", .required = true},
 }};
 
-constexpr std::array<KeyRow<SphParams>, 13> kSph{{
+constexpr std::array<KeyRow<SphParams>, 14> kSph{{
     {.key = "spacing", .kind = K::Quantity, HVI_KEY_FIELD(SphParams, spacing),
      .ok = [](double v) { return v > 0.0; }, .problem = "must be > 0", .allowed = "a length > 0",
      .docValue = "length > 0, particle spacing dx", .docDefault = "`0.01 cm`"},
@@ -38,6 +38,13 @@ constexpr std::array<KeyRow<SphParams>, 13> kSph{{
      .choices = energyFormNames,
      .docValue = "`\"compatible\"` (Owen 2014, exact total energy), `\"symmetric\"` (the study's)",
      .docDefault = "`\"compatible\"`"},
+    // docs/sph-rz.md: the ring form (hvi's first r-z SPH) stays available for reproduction.
+    {.key = "rz_form", .kind = K::Choice, HVI_KEY_FIELD(SphParams, rzForm),
+     .choices = rzFormNames,
+     .docValue = "`\"auto\"` (symmetric; ring with strength), `\"symmetric\"` (pair weights "
+                 "r_j / (s_i s_j), axially consistent at the axis), `\"ring\"` (r_j weights, "
+                 "hoop correction C; docs/sph-rz.md)",
+     .docDefault = "`\"auto\"`"},
     {.key = "alpha", .kind = K::Number, HVI_KEY_FIELD(SphParams, alpha),
      .ok = [](double v) { return v >= 0.0; }, .problem = "must be >= 0", .allowed = "alpha >= 0",
      .docValue = ">= 0, Monaghan viscosity alpha_Pi", .docDefault = "1.0"},

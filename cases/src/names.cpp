@@ -13,6 +13,7 @@ constexpr std::array<std::string_view, 2> kLattices{"square", "hexagonal"};
 constexpr std::array<std::string_view, 3> kLimiters{"minmod", "van_leer", "superbee"};
 constexpr std::array<std::string_view, 2> kInterfaces{"whole_cell", "conservative"};
 constexpr std::array<std::string_view, 2> kEnergyForms{"compatible", "symmetric"};
+constexpr std::array<std::string_view, 3> kRzForms{"auto", "ring", "symmetric"};
 
 template <class E, std::size_t N>
 std::string_view nameOf(const std::array<std::string_view, N>& names, E e) {
@@ -29,6 +30,7 @@ std::span<const std::string_view> latticeNames() { return kLattices; }
 std::span<const std::string_view> limiterNames() { return kLimiters; }
 std::span<const std::string_view> interfaceNames() { return kInterfaces; }
 std::span<const std::string_view> energyFormNames() { return kEnergyForms; }
+std::span<const std::string_view> rzFormNames() { return kRzForms; }
 
 std::string_view toString(SolverKind s) { return nameOf(kSolvers, s); }
 std::string_view toString(Boundary b) { return nameOf(kBoundaries, b); }
@@ -37,5 +39,6 @@ std::string_view toString(Lattice l) { return nameOf(kLattices, l); }
 std::string_view toString(Limiter l) { return nameOf(kLimiters, l); }
 std::string_view toString(InterfaceMode m) { return nameOf(kInterfaces, m); }
 std::string_view toString(EnergyForm f) { return nameOf(kEnergyForms, f); }
+std::string_view toString(RzForm f) { return nameOf(kRzForms, f); }
 
 }  // namespace hvi::cases

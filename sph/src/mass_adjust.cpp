@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "detail/axis_correction.hpp"
 #include "detail/boundary.hpp"
 #include "detail/passes.hpp"
 #include "hvi/common/error.hpp"
@@ -19,6 +20,10 @@ namespace hvi::sph {
 MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) {
   const std::size_t n = ps.size();
   const bool rz = opt.geometry == Geometry::Axisymmetric;
+  // Symmetric r-z form (docs/sph-rz.md): rho_i = sum_j nu_j W_ij / s_i with nu = m / (2 pi s),
+  // so the unknown is nu and the sum's target is s_i rho0_i.
+  const bool sym = rz && opt.rzForm == cases::RzForm::Symmetric;
+  const detail::RingScale* ring = sym ? &detail::ringScale(opt.kernel) : nullptr;
   MassAdjustReport report;
   if (n == 0) return report;
   detail::PairArrays a;
@@ -32,6 +37,7 @@ MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) 
     a.obj[i] = ps.object[i];
     a.mu[i] = 1.0;
     a.rw[i] = rz ? std::abs(ps.x[i]) : 1.0;
+    if (sym) a.rw[i] = ring->value(std::abs(ps.x[i]), ps.h[i]);  // s_i here
     hmax = std::max(hmax, ps.h[i]);
   }
   // Positions do not move, so the list (radius = kernel support) is built once.
@@ -72,8 +78,8 @@ MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) 
           const std::size_t j = static_cast<std::size_t>(nb[k]);
           if (a.obj[j] == obj) sum += a.mu[j] * w[k];
         }
-        rho[i] = sum;
-        const double r = std::abs(ps.rhoRef[i] / sum - 1.0);
+        rho[i] = sym ? sum / a.rw[i] : sum;
+        const double r = std::abs(ps.rhoRef[i] / rho[i] - 1.0);
         if (r > myRes) {
           myRes = r;
           myWorst = il;

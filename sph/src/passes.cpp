@@ -36,12 +36,30 @@ inline void remainderRow(const int* nb, int cnt, const double* wx, const double*
   de[i] -= halfDt * corr;
 }
 
+// The symmetric r-z form's rates of particle i from its pair sums (docs/sph-rz.md, "Symmetric
+// ring weights"): the pair sums divided by s_i; the hoop force, the radial derivative of the
+// weights s_i (in nu_i and in rho_i = sum nu_j W_ij / s_i), s'_i / s_i^2 (H_i + A_i s_i rho_i)
+// with H_i = sum_k nu_k A_k W_ik (k = i included); its work -v_r a_hoop is charged to i itself,
+// so the hoop terms conserve energy particle by particle, as in the ring form.
+inline double symmetricRz(const PairArrays& a, std::size_t i, const RingScale* ring, double wii,
+                        double sax, double saz, double sde, double shoop, const Rates& out) {
+  const double si = a.rs[i], inv = 1.0 / si;
+  const double slope = ring->slope(std::abs(a.x[i]), a.h[i]);
+  const double hoop = slope * inv * inv * (shoop + a.mu[i] * a.q[i] * wii + a.q[i] * si * a.rho[i]);
+  const double hoopAx = a.x[i] >= 0.0 ? hoop : -hoop;  // a particle briefly past the axis
+  out.ax[i] = sax * inv + hoopAx;
+  out.az[i] = saz * inv;
+  out.de[i] = sde * inv - a.vx[i] * hoopAx;
+  return hoopAx;
+}
+
 // Each particle gathers over its own list: a pair is evaluated from both ends, which doubles
 // the arithmetic but needs no atomics or per-thread copies, and makes every sum's order fixed
 // (bit-for-bit reproducible at any thread count).
 template <class K, bool RZ, bool Viscous, bool Cached, bool Compatible>
 void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
-               const MonaghanViscosity& visc, const AxisCorrection* axis, const Rates& out) {
+               const MonaghanViscosity& visc, const AxisCorrection* axis, const RingScale* ring,
+               const Rates& out) {
   const long nr = static_cast<long>(nReal);
 #pragma omp parallel for schedule(static) if (nr > kParallelPairs)
   for (long il = 0; il < nr; ++il) {
@@ -96,6 +114,13 @@ void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list
       if constexpr (Viscous && Cached) phi = std::min(phi, r.phi);
     }
     if constexpr (RZ) {
+      if (ring) {
+        const double hoopAx = symmetricRz(a, i, ring, K::value(0.0, A.h), sax, saz, sde, shoop, out);
+        if constexpr (kPairs) out.hoopAx[i] = hoopAx;
+        if constexpr (Cached) out.drho[i] = sdrho;
+        if constexpr (Cached) out.phi[i] = phi;
+        continue;
+      }
       // docs/sph-rz.md: the sums carry r_j weights; divide by r_i and add the hoop terms,
       // whose self parts (j = i) come from d mu_i / d r_i, corrected for the axis bias.
       const double wii = K::value(0.0, A.h);
@@ -132,7 +157,8 @@ RowKernel laneKernel(bool rz, bool viscous, bool cached, bool compatible) {
 // added up in list order exactly as forcePass adds them (bit for bit the same rates).
 template <bool RZ, bool Viscous, bool Cached, bool Compatible>
 void lanePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
-              const MonaghanViscosity& visc, const AxisCorrection* axis, const Rates& out) {
+              const MonaghanViscosity& visc, const AxisCorrection* axis, const RingScale* ring,
+              const Rates& out) {
   static const RowKernel kernel = laneKernel(RZ, Viscous, Cached, Compatible);
   constexpr bool kPairs = Compatible && !Cached;
   const LaneArrays la{a.x.data(),  a.z.data(), a.vx.data(), a.vz.data(), a.rho.data(),
@@ -169,6 +195,14 @@ void lanePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
         if constexpr (Viscous && Cached) phi = std::min(phi, t.phi[k]);
       }
       if constexpr (RZ) {
+        if (ring) {
+          const double hoopAx =
+              symmetricRz(a, i, ring, GaussianKernel::value(0.0, a.h[i]), sax, saz, sde, shoop, out);
+          if constexpr (kPairs) out.hoopAx[i] = hoopAx;
+          if constexpr (Cached) out.drho[i] = sdrho;
+          if constexpr (Cached) out.phi[i] = phi;
+          continue;
+        }
         // As forcePass (docs/sph-rz.md).
         const double hi = a.h[i], rwi = a.rw[i];
         const double wii = GaussianKernel::value(0.0, hi);
@@ -319,7 +353,7 @@ void scalarRemainder(const PairArrays& a, std::size_t nReal, const NeighbourList
         pwx[k] = r.share * r.ax;
         pwz[k] = r.share * r.az;
       }
-      remainderRow(nb, cnt, pwx, pwz, i, dax, daz, a.rw.data(), hoopAx, halfDt, de);
+      remainderRow(nb, cnt, pwx, pwz, i, dax, daz, a.rs.data(), hoopAx, halfDt, de);
     }
   }
 }
@@ -347,7 +381,7 @@ void laneRemainder(const PairArrays& a, std::size_t nReal, const NeighbourList& 
       const int* nb = list.index.data() + list.start[i];
       const int cnt = list.count[i];
       kernel(la, i, nb, nullptr, cnt, visc.alpha, visc.beta, t);
-      remainderRow(nb, cnt, t.pwx, t.pwz, i, dax, daz, a.rw.data(), hoopAx, halfDt, de);
+      remainderRow(nb, cnt, t.pwx, t.pwz, i, dax, daz, a.rs.data(), hoopAx, halfDt, de);
     }
   }
 }

@@ -26,6 +26,11 @@ void validate(const cases::Scene& scene) {
         "{}: SPH in rz geometry needs domain xmin = 0 with boundary 'axis' (got xmin = {})",
         scene.path, scene.domain.xmin));
   if (scene.bodies.empty()) throw InputError(scene.path + ": SPH: the scene has no bodies");
+  if (scene.geometry == Geometry::Axisymmetric && scene.sph.rzForm == cases::RzForm::Symmetric &&
+      scene.has(cases::Effect::Strength))
+    throw InputError(scene.path +
+                     ": sph.rz_form = \"symmetric\" is not implemented with the effect strength "
+                     "(docs/sph-rz.md); allowed with strength: \"auto\" or \"ring\"");
   if (!(scene.sph.alpha >= 0.0) || !(scene.sph.beta >= 0.0))
     throw InputError(fmt::format("{}: sph.alpha = {} and sph.beta = {} must be >= 0", scene.path,
                                  scene.sph.alpha, scene.sph.beta));
@@ -35,6 +40,12 @@ void validate(const cases::Scene& scene) {
 ParticleSystem filledBodies(const cases::Scene& scene) {
   validate(scene);
   return fillBodies(scene);
+}
+
+// docs/sph-rz.md, "Which form": the symmetric form where it is implemented (not with strength).
+cases::RzForm resolvedRzForm(const cases::Scene& scene) {
+  if (scene.sph.rzForm != cases::RzForm::Auto) return scene.sph.rzForm;
+  return scene.has(cases::Effect::Strength) ? cases::RzForm::Ring : cases::RzForm::Symmetric;
 }
 
 }  // namespace
@@ -52,6 +63,7 @@ StepperConfig stepperConfig(const cases::Scene& scene) {
   cfg.viscosity = scene.has(cases::Effect::ArtificialViscosity);
   cfg.visc = {scene.sph.alpha, scene.sph.beta};
   cfg.energy = scene.sph.energy;
+  cfg.rzForm = resolvedRzForm(scene);
   cfg.cfl = scene.sph.cfl;
   cfg.domain = scene.domain;
   cfg.time = scene.tStart;
@@ -73,6 +85,7 @@ MassAdjustOptions massAdjustOptions(const cases::Scene& scene) {
   MassAdjustOptions opt;
   opt.geometry = scene.geometry;
   opt.kernel = scene.sph.kernel;
+  opt.rzForm = resolvedRzForm(scene);
   opt.domain = scene.domain;
   opt.tolerance = scene.sph.massTolerance;
   opt.deleteFraction = scene.sph.deleteFraction;

@@ -20,9 +20,19 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 Stepper::Impl::Impl(ParticleSystem ps, std::vector<eos::Eos> mats, StepperConfig config)
     : cfg(std::move(config)), materials(std::move(mats)), bounds(cfg.domain, cfg.geometry) {
   rz = cfg.geometry == Geometry::Axisymmetric;
-  if (rz) axis = std::make_unique<detail::AxisCorrection>(cfg.kernel);
+  if (rz && cfg.rzForm == cases::RzForm::Symmetric) {
+    // The stress terms (strength_pass.cpp) are written for the ring form's weights only.
+    if (!cfg.strength.empty())
+      throw InputError(
+          "SPH: sph.rz_form = \"symmetric\" is not implemented with the effect strength; set "
+          "sph.rz_form = \"ring\" (docs/sph-rz.md)");
+    ring = &detail::ringScale(cfg.kernel);
+  } else if (rz) {
+    axis = std::make_unique<detail::AxisCorrection>(cfg.kernel);
+  }
   compatible = cfg.energy == cases::EnergyForm::Compatible;
   passCached = detail::selectForcePass(cfg.kernel, rz, cfg.viscosity, compatible, true);
+  // (the symmetric r-z form runs the same pair kernels; only the drivers' r-z part differs)
   passFresh = detail::selectForcePass(cfg.kernel, rz, cfg.viscosity, compatible, false);
   passList = detail::selectListPass(cfg.kernel);
   passRemainder = detail::selectRemainderPass(cfg.kernel, rz, cfg.viscosity);
@@ -58,16 +68,26 @@ Stepper::Impl::Impl(ParticleSystem ps, std::vector<eos::Eos> mats, StepperConfig
 
 void Stepper::Impl::deriveWeights() {
   const long nl = static_cast<long>(n);
-  if (rz) {
+  if (ring) {
+    // Symmetric form: nu = m / (2 pi s), the pair sums divided by s, no radius weight.
+#pragma omp parallel for schedule(static) if (nl > detail::kParallelElements)
+    for (long i = 0; i < nl; ++i) {
+      a.rw[i] = 1.0;
+      a.rs[i] = ring->value(std::abs(a.x[i]), a.h[i]);
+      a.mu[i] = m[i] / (kTwoPi * a.rs[i]);
+    }
+  } else if (rz) {
 #pragma omp parallel for schedule(static) if (nl > detail::kParallelElements)
     for (long i = 0; i < nl; ++i) {
       a.rw[i] = std::abs(a.x[i]);
+      a.rs[i] = a.rw[i];
       a.mu[i] = m[i] / (kTwoPi * a.rw[i]);
     }
   } else {
 #pragma omp parallel for schedule(static) if (nl > detail::kParallelElements)
     for (long i = 0; i < nl; ++i) {
       a.rw[i] = 1.0;
+      a.rs[i] = 1.0;
       a.mu[i] = m[i];
     }
   }
@@ -114,6 +134,8 @@ void Stepper::Impl::corrector() {
   for (std::size_t i = 0; i < n; ++i) hmax = std::max(hmax, a.h[i]);
   bounds.makeGhosts(a, n, radiusFactor * hmax);
   passList(a, n, radiusFactor, grid, list, a.rho.data());
+  if (ring)  // the list build sums nu_j W_ij = s_i rho_i
+    for (std::size_t i = 0; i < n; ++i) a.rho[i] /= a.rs[i];
   detail::evaluateEos(materials, mat.data(), a.rho.data(), e.data(), a.p.data(), a.c.data(), n);
   if (strength) strength->limitTension(a, n, mat.data(), true);
   checkState("corrector (summation density)");
@@ -139,7 +161,7 @@ void Stepper::Impl::compatibleRemainder(double half) {
   bounds.mirrorGhostVectors(dax.data(), daz.data(), n);
   if (storePairs)
     detail::compatibleEnergy(list, n, pairWx.data(), pairWz.data(), dax.data(), daz.data(),
-                             a.rw.data(), rz ? hoopAx.data() : nullptr, half, de1.data());
+                             a.rs.data(), rz ? hoopAx.data() : nullptr, half, de1.data());
   else
     passRemainder(a, n, list, cfg.visc, dax.data(), daz.data(), rz ? hoopAx.data() : nullptr,
                   half, de1.data());
@@ -241,7 +263,7 @@ double Stepper::step(double tStop) {
   const long nl = static_cast<long>(s.n);
   const detail::Rates ratesN{s.ax0.data(), s.az0.data(), s.de0.data(), s.drho0.data(),
                              s.phi0.data()};
-  s.passCached(a, s.n, s.list, s.cfg.visc, s.axis.get(), ratesN);
+  s.passCached(a, s.n, s.list, s.cfg.visc, s.axis.get(), s.ring, ratesN);
   if (s.strength) s.strength->pass(a, s.n, s.list, true, s.axis.get(), ratesN);
   double dt = s.timeStep();
   if (s.dt0 == 0.0 && dt > 0.0 && std::isfinite(dt)) s.dt0 = dt;
@@ -265,7 +287,8 @@ double Stepper::step(double tStop) {
     a.vx[i] += half * s.ax0[i];
     a.vz[i] += half * s.az0[i];
     s.e[i] += half * s.de0[i];
-    a.rho[i] += half * s.drho0[i];
+    // Symmetric r-z form: the continuity rate is that of s_i rho_i = sum_j nu_j W_ij.
+    a.rho[i] = (s.ring ? a.rho[i] * a.rs[i] : a.rho[i]) + half * s.drho0[i];
   }
   if (s.rz) {
     // docs/sph-rz.md, "Density": the ring weights' change mu^{n+1/2} - mu^n is taken exactly,
@@ -274,10 +297,19 @@ double Stepper::step(double tStop) {
     const std::size_t total = a.size();
     if (s.dmu.size() < total) s.dmu.resize(total);
 #pragma omp parallel for schedule(static) if (nl > detail::kParallelElements)
-    for (long i = 0; i < nl; ++i) s.dmu[i] = s.m[i] / (kTwoPi * std::abs(a.x[i])) - a.mu[i];
+    for (long i = 0; i < nl; ++i) {
+      const double r = std::abs(a.x[i]);
+      const double scale = s.ring ? s.ring->value(r, a.h[i]) : r;
+      s.dmu[i] = s.m[i] / (kTwoPi * scale) - a.mu[i];
+    }
     s.bounds.copyGhostScalars(s.dmu.data(), s.n);
     detail::weightChange(s.list, s.n, s.x0.data(), s.z0.data(), a.x.data(), a.z.data(),
                          a.obj.data(), a.h.data(), s.dmu.data(), s.cfg.kernel, a.rho.data());
+    if (s.ring) {
+      s.deriveWeights();  // s at the half state: rho = (s rho) / s
+#pragma omp parallel for schedule(static) if (nl > detail::kParallelElements)
+      for (long i = 0; i < nl; ++i) a.rho[i] /= a.rs[i];
+    }
   }
   detail::evaluateEos(s.materials, s.mat.data(), a.rho.data(), s.e.data(), a.p.data(), a.c.data(),
                       s.n);
@@ -310,7 +342,7 @@ double Stepper::step(double tStop) {
     }
     ratesHalf.hoopAx = s.rz ? s.hoopAx.data() : nullptr;
   }
-  s.passFresh(a, s.n, s.list, s.cfg.visc, s.axis.get(), ratesHalf);
+  s.passFresh(a, s.n, s.list, s.cfg.visc, s.axis.get(), s.ring, ratesHalf);
   // Before the compatible remainder: the stress accelerations are part of a^{n+1/2} - a^n.
   if (s.strength) s.strength->pass(a, s.n, s.list, false, s.axis.get(), ratesHalf);
   if (s.compatible) s.compatibleRemainder(half);

@@ -13,7 +13,9 @@ struct PairArrays {
   // Copied by a ghost at every refresh.
   std::vector<double> rho, p, c;
   std::vector<double> mu;   //!< kernel weight: m (planar) or m / (2 pi r) (r-z)
-  std::vector<double> rw;   //!< radius weight: 1 (planar) or r (r-z)
+  std::vector<double> rw;   //!< radius weight: 1 (planar), r (r-z ring form), 1 (r-z symmetric)
+  //! Divisor of the pair sums: 1 (planar), r (ring form) or s(r) (symmetric form, RingScale)
+  std::vector<double> rs;
   std::vector<double> q;    //!< rw P / rho^2
   std::vector<double> lam;  //!< -v_r / r (r-z), 0 planar
   // Fixed per particle: copied when the ghosts are made.
@@ -28,7 +30,7 @@ struct PairArrays {
   void forEachCopied(F&& f) {
     if (!lean) { f(rho); f(p); f(c); }
     f(mu); f(rw);
-    if (!lean) { f(q); f(lam); }
+    if (!lean) { f(rs); f(q); f(lam); }
   }
   template <class F>
   void forEachFixed(F&& f) {

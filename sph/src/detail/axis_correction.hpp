@@ -1,5 +1,6 @@
 //! @file Hoop-term correction near the r-z axis for the kernel's bias with mirror ghosts.
 #pragma once
+#include <cmath>
 #include <vector>
 
 #include "hvi/cases/scene.hpp"
@@ -31,5 +32,48 @@ class AxisCorrection {
   double inv_ = 0.0;  // 1 / table step
   std::vector<double> table_;
 };
+
+}  // namespace hvi::sph::detail
+
+namespace hvi::sph::detail {
+
+//! The symmetric r-z form (docs/sph-rz.md, "Symmetric ring weights"): the density of ring k is
+//! rho_k = sum_j m_j W_kj / (2 pi s_k s_j), whose pair weight |r_j| / (s_k s_j) averages to
+//! exactly 1 over the kernel (mirror ghosts included) when
+//!   s(r) = E[ |r + X| / s(|r + X|) ],   X ~ the kernel's x-marginal,
+//! the fixed point tabulated here: s = sqrt(h) sigma(r / h), sigma(u) ~ sqrt(u) far from the
+//! axis, sigma'(0) = 0 at it. The same average makes the axial and radial pair sums consistent
+//! at the axis, with no correction factor.
+class RingScale {
+ public:
+  explicit RingScale(cases::Kernel kernel);
+  //! s(r) and ds/dr for r >= 0 (cm^(1/2), cm^(-1/2)).
+  [[nodiscard]] double value(double r, double h) const {
+    return std::sqrt(h) * lookup(sigma_, r / h, false);
+  }
+  [[nodiscard]] double slope(double r, double h) const {
+    return lookup(dsigma_, r / h, true) / std::sqrt(h);
+  }
+
+ private:
+  [[nodiscard]] double lookup(const std::vector<double>& t, double u, bool derivative) const {
+    const double s = u * inv_;
+    if (s >= static_cast<double>(t.size() - 1)) {
+      // sqrt(u) (1 - V / (16 u^2)): the fixed point's expansion in h / r (V = Var X).
+      const double c = var_ / 16.0;
+      return derivative ? 0.5 / std::sqrt(u) + 1.5 * c / (u * u * std::sqrt(u))
+                        : std::sqrt(u) * (1.0 - c / (u * u));
+    }
+    const auto k = static_cast<std::size_t>(s);
+    const double f = s - static_cast<double>(k);
+    return t[k] + f * (t[k + 1] - t[k]);
+  }
+  double inv_ = 0.0;
+  double var_ = 0.0;
+  std::vector<double> sigma_, dsigma_;
+};
+
+//! The table of each kernel, built once per process (thread-safe static).
+const RingScale& ringScale(cases::Kernel kernel);
 
 }  // namespace hvi::sph::detail

@@ -31,12 +31,13 @@ struct Rates {
 //! the current positions (the predictor's half state).
 //! The continuity rate sums over the particle's own object only, as the summation density of
 //! the corrector does (momentum and energy always sum over every pair).
-//! `axis` (r-z only, may be null in planar) corrects the hoop term near the axis.
+//! `axis` (r-z ring form only, else null) corrects the hoop term near the axis; `ring` (r-z
+//! symmetric form only, else null) gives s(r) and s'(r) of its hoop term (docs/sph-rz.md).
 //! `compatible`: the energy rate is each particle's own share of its pairs' work (docs/sph.md,
 //! "Energy"), and the half-state pass also fills out.pairWx, pairWz (and hoopAx in r-z).
 using ForcePass = void (*)(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
                            const MonaghanViscosity& visc, const AxisCorrection* axis,
-                           const Rates& out);
+                           const RingScale* ring, const Rates& out);
 ForcePass selectForcePass(cases::Kernel kernel, bool rz, bool viscous, bool compatible,
                           bool cached);
 

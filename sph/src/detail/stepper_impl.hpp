@@ -63,7 +63,8 @@ struct Stepper::Impl {
   detail::ListPass passList = nullptr;
   detail::RemainderPass passRemainder = nullptr;  // compatible, pair data not stored
   detail::Boundaries bounds;
-  std::unique_ptr<detail::AxisCorrection> axis;  // r-z only
+  std::unique_ptr<detail::AxisCorrection> axis;  // r-z ring form only
+  const detail::RingScale* ring = nullptr;       // r-z symmetric form only
   std::unique_ptr<detail::StrengthModel> strength;  // effect strength only
   double radiusFactor = 0.0;   // list radius / h_ij: kernel support + skin
   bool rz = false;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "hvi/cases/load.hpp"
 #include "hvi/sph/sph.hpp"
@@ -53,9 +54,11 @@ struct Fastest {
 
 //! Runs a shipped impact scene (striker = first body, an aluminium-on-aluminium impact) to its
 //! end and returns the fastest particle speed seen after any step, with the bound.
-Fastest fastestParticle(const std::string& name) {
-  const cases::Scene scene =
+Fastest fastestParticle(const std::string& name,
+                        std::optional<cases::RzForm> form = std::nullopt) {
+  cases::Scene scene =
       cases::loadScene(std::string(HVI_SOURCE_DIR) + "/cases/scenes/" + name + ".toml");
+  if (form) scene.sph.rzForm = *form;
   const cases::Body& striker = scene.bodies.at(0);
   const double V = std::abs(striker.velocity.z);
   const eos::Eos& eos = scene.materials.at(striker.material).eos;
@@ -113,13 +116,18 @@ TEST(ImpactSpeedBound, PlanarVariant2StaysWithinTheBound) {
   EXPECT_LE(f.forward, f.bound);
 }
 
-// Open (issue 14, item 1; docs/sph-rz.md "Open"): in r-z the first column next to the axis is
-// accelerated along it, to 0.7345 cm/us (striker, r = 0.014 cm, z = 7.88 cm, 0.555 us) against
-// the bound 0.6891, and a shield particle near the axis leads the cloud at 0.6996 from 4 us on.
-// Disabled until the axis treatment lands; run it with --gtest_also_run_disabled_tests.
+// Open (issue 14, item 1; docs/sph-rz.md "The axial needle"): in r-z the first column next to
+// the axis is accelerated along it. Ring form (the default): 0.7345 cm/us (striker, r = 0.014 cm,
+// z = 7.88 cm, 0.555 us) against the bound 0.6891: its cause, the ring weights r_j / r_i of the
+// axial pressure force, is pinned by RzAxis.AxialPressureGradientAtTheAxis. The symmetric form,
+// which removes that bias, measures 0.7082 (a shield particle of the second column): lower, still
+// above the bound (and 0.7114 against the ring form's 0.7052 at 0.0125 cm). Disabled until the
+// remaining excess is found; run it with --gtest_also_run_disabled_tests.
 TEST(ImpactSpeedBound, DISABLED_Variant1RzStaysWithinTheBound) {
-  const Fastest f = fastestParticle("variant1_sph_coarse");
+  const Fastest f = fastestParticle("variant1_sph_coarse", cases::RzForm::Ring);
   EXPECT_LE(f.forward, f.bound);
+  const Fastest g = fastestParticle("variant1_sph_coarse", cases::RzForm::Symmetric);
+  EXPECT_LE(g.forward, g.bound);
 }
 
 }  // namespace

@@ -31,6 +31,24 @@ TEST(Solver, RzNeedsTheAxisAtXZero) {
   EXPECT_THROW(createSolver(s), InputError);
 }
 
+// docs/sph-rz.md, "Which form": auto is the symmetric form, the ring form with strength (whose
+// stress terms exist for the ring form only); asking for symmetric with strength names the key.
+TEST(Solver, RzFormAutoAndItsStrengthLimit) {
+  auto s = smallImpact(Geometry::Axisymmetric, {});
+  EXPECT_EQ(stepperConfig(s).rzForm, cases::RzForm::Symmetric);
+  EXPECT_EQ(massAdjustOptions(s).rzForm, cases::RzForm::Symmetric);
+  s.effects.insert(Effect::Strength);
+  EXPECT_EQ(stepperConfig(s).rzForm, cases::RzForm::Ring);
+  EXPECT_EQ(massAdjustOptions(s).rzForm, cases::RzForm::Ring);
+  s.sph.rzForm = cases::RzForm::Symmetric;
+  try {
+    (void)createSolver(s);
+    ADD_FAILURE() << "symmetric with strength was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("sph.rz_form"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Solver, TensionCutoffFollowsTheEffect) {
   auto s = smallImpact(Geometry::Planar, {});
   EXPECT_FALSE(std::get<eos::Tillotson>(sceneMaterials(s)[0]).tensionCutoff);

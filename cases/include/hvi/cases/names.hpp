@@ -19,6 +19,7 @@ std::span<const std::string_view> latticeNames();   //!< square, hexagonal
 std::span<const std::string_view> limiterNames();   //!< minmod, van_leer, superbee
 std::span<const std::string_view> interfaceNames(); //!< whole_cell, conservative
 std::span<const std::string_view> energyFormNames(); //!< compatible, symmetric
+std::span<const std::string_view> rzFormNames();     //!< auto, ring, symmetric
 
 std::string_view toString(SolverKind s);
 std::string_view toString(Boundary b);
@@ -27,5 +28,6 @@ std::string_view toString(Lattice l);
 std::string_view toString(Limiter l);
 std::string_view toString(InterfaceMode m);
 std::string_view toString(EnergyForm f);
+std::string_view toString(RzForm f);
 
 }  // namespace hvi::cases

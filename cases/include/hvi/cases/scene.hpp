@@ -106,6 +106,11 @@ enum class Lattice { Square, Hexagonal };
 //! work is split by each side's own pressure work (exact total energy, no cooling of a particle
 //! by its neighbours' pressure), or METHOD.md's symmetric form (the study's).
 enum class EnergyForm { Compatible, Symmetric };
+//! r-z SPH ring weights (docs/sph-rz.md): the ring form (neighbour radius r_j, hoop term with
+//! the axis correction C) or the symmetric form (weight |r_j| / (s_i s_j), consistent at the
+//! axis in the axial direction too). Auto: symmetric, ring with the effect strength (whose
+//! stress terms exist for the ring form only).
+enum class RzForm { Auto, Ring, Symmetric };
 
 struct SphParams {
   double spacing = 0.01;   //!< particle spacing dx, cm
@@ -113,6 +118,7 @@ struct SphParams {
   Kernel kernel = Kernel::Gaussian;
   Lattice lattice = Lattice::Square;
   EnergyForm energy = EnergyForm::Compatible;
+  RzForm rzForm = RzForm::Auto;
   double alpha = 1.0;      //!< Monaghan alpha_Pi
   double beta = 2.0;       //!< Monaghan beta_Pi
   double cfl = 0.3;

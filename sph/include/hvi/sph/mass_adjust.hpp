@@ -10,6 +10,7 @@ namespace hvi::sph {
 struct MassAdjustOptions {
   Geometry geometry = Geometry::Planar;
   cases::Kernel kernel = cases::Kernel::Gaussian;
+  cases::RzForm rzForm = cases::RzForm::Ring;  //!< r-z: the density's weights (sph-rz.md)
   cases::Domain domain;         //!< walls and the axis are mirrors, as in the run
   double tolerance = 1e-9;      //!< stop when |rho0_i / rho_i - 1| < tolerance for every i
   double deleteFraction = 1e-4; //!< delete i when m_i^(s+1) / max_k m_k^(s+1) < deleteFraction

@@ -21,6 +21,8 @@ struct StepperConfig {
   bool viscosity = true;                                     //!< effect artificial_viscosity
   MonaghanViscosity visc;                                    //!< alpha_Pi, beta_Pi
   cases::EnergyForm energy = cases::EnergyForm::Compatible;  //!< docs/sph.md, "Energy"
+  //! docs/sph-rz.md; Symmetric selects that form, anything else the ring form
+  cases::RzForm rzForm = cases::RzForm::Ring;
   double cfl = 0.3;
   cases::Domain domain;  //!< walls / axis are mirrors, outflow sides remove particles
   double time = 0.0;     //!< us, time of the initial state
