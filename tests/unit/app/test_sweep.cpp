@@ -225,6 +225,27 @@ TEST(BallisticLimit, BisectsToTheFailureThresholdAndResumes) {
   EXPECT_EQ(test::readJson(f.dir / "out" / "ballistic_limit.json").at("points"), j.at("points"));
 }
 
+TEST(BallisticLimit, SolverDefaultsToTheDeclarationsAndTheOptionOverridesIt) {
+  // The coarse example declares solver = "sph": without --solver its cases are SPH runs (one
+  // command reproduces its curve); --solver tvd still chooses TVD.
+  Fake f("bl_solver");
+  SweepOptions o = f.options();
+  o.shield = fs::path(HVI_SOURCE_DIR) / "shield" / "examples" / "whipple_tp2003_coarse.toml";
+  BallisticLimitOptions bl;
+  bl.speeds = {7.0};
+  bl.tolerance = 0.5;
+  ASSERT_EQ(runBallisticLimit(o, bl), kOk);
+  ASSERT_FALSE(f.calls().empty());
+  for (const auto& c : f.calls()) EXPECT_EQ(c.substr(0, 6), "sph_v7") << c;
+  EXPECT_EQ(test::readJson(f.dir / "out" / "ballistic_limit.json").at("solver"), "sph");
+  o.out = f.dir / "out_tvd";
+  bl.solver = cases::SolverKind::Tvd;
+  const std::size_t before = f.calls().size();
+  ASSERT_EQ(runBallisticLimit(o, bl), kOk);
+  ASSERT_GT(f.calls().size(), before);
+  EXPECT_EQ(f.calls().back().substr(0, 6), "tvd_v7");
+}
+
 }  // namespace
 }  // namespace hvi::app
 
