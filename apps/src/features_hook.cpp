@@ -28,6 +28,28 @@ nlohmann::json measureRearWallJson(const Snapshot& snap, const cases::Scene& sce
   }
 }
 
+nlohmann::json measurePlatesJson(const Snapshot& snap, const cases::Scene& scene) {
+  const auto plates = shield::plateConfigsFromScene(scene);
+  if (plates.empty()) return nullptr;
+  try {
+    const auto states = shield::measurePlates(snap, plates);
+    nlohmann::json out = nlohmann::json::array();
+    for (std::size_t i = 0; i < plates.size(); ++i)
+      out.push_back(shield::plateJson(plates[i].name, states[i]));
+    return out;
+  } catch (const InputError&) {
+    return nullptr;  // no object or velocity field: nothing to measure, the run goes on
+  }
+}
+
+nlohmann::json platesSummaryJson(const nlohmann::json& history) {
+  nlohmann::json perSnapshot = nlohmann::json::array();
+  for (const auto& e : history)
+    if (e.contains("plates")) perSnapshot.push_back(e.at("plates"));
+  if (perSnapshot.empty()) return nullptr;
+  return shield::platesSummary(perSnapshot);
+}
+
 nlohmann::json rearWallVerdictJson(const nlohmann::json& history) {
   nlohmann::json states = nlohmann::json::array();
   for (const auto& e : history)

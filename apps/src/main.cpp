@@ -156,12 +156,12 @@ int main(int argc, char** argv) {
   hvi::app::SweepOptions blOpt;
   blOpt.out = "ballistic_limit";
   hvi::app::BallisticLimitOptions bl;
-  std::string blSolver = "tvd";
+  std::string blSolver;  // empty: the declaration's solver
   auto* blCmd = app.add_subcommand(
       "ballistic-limit",
       "Critical projectile diameter at each speed by bisection on rear-wall failure");
   addSweepOptions(*blCmd, blOpt);
-  blCmd->add_option("--solver", blSolver, "sph or tvd")->capture_default_str();
+  blCmd->add_option("--solver", blSolver, "sph or tvd (default: the declaration's solver)");
   blCmd->add_option("--speed", bl.speeds, "Impact speeds, km/s (e.g. 2,3,5,7,9,12)")
       ->delimiter(',')
       ->required();
@@ -227,9 +227,11 @@ int main(int argc, char** argv) {
       return hvi::app::runSweep(sweepOpt, grid);
     }
     if (*blCmd) {
-      std::vector<hvi::cases::SolverKind> k;
-      if (!parseSolvers({blSolver}, k)) return hvi::app::kBadInput;
-      bl.solver = k.front();
+      if (!blSolver.empty()) {
+        std::vector<hvi::cases::SolverKind> k;
+        if (!parseSolvers({blSolver}, k)) return hvi::app::kBadInput;
+        bl.solver = k.front();
+      }
       return hvi::app::runBallisticLimit(blOpt, bl);
     }
   } catch (const hvi::OutputError& e) {

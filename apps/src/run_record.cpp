@@ -75,6 +75,7 @@ void RunRecord::snapshot(const Snapshot& snap, const Totals& totals, const std::
   if (scene_.has(cases::Effect::Features)) {
     e["features"] = measureFeaturesJson(snap, scene_);
     if (auto rw = measureRearWallJson(snap, scene_); !rw.is_null()) e["rear_wall"] = std::move(rw);
+    if (auto p = measurePlatesJson(snap, scene_); !p.is_null()) e["plates"] = std::move(p);
   }
   history_.push_back(std::move(e));
   writeTimeseries();
@@ -143,6 +144,7 @@ void RunRecord::finish(const Solver& solver, double wallSeconds, long stepsThisR
   };
   if (auto verdict = rearWallVerdictJson(history_); !verdict.is_null())
     s["rear_wall_failure"] = std::move(verdict);
+  if (auto plates = platesSummaryJson(history_); !plates.is_null()) s["plates"] = std::move(plates);
   writeTextAtomically(out_ / "summary.json", s.dump(2));
 }
 

@@ -164,7 +164,7 @@ int runSweep(const SweepOptions& o, const SweepGrid& g) {
 int runBallisticLimit(const SweepOptions& o, const BallisticLimitOptions& bl) {
   return guarded("ballistic-limit", [&] {
     shield::ShieldSpec base = shield::loadShield(o.shield);
-    base.solver = bl.solver;
+    if (bl.solver) base.solver = *bl.solver;
     if (bl.speeds.empty()) throw InputError("--speed: give one or more speeds (km/s)");
     checkPositive("--speed", bl.speeds, "km/s");
     if (!(bl.tolerance > 0 && bl.tolerance < 1))
@@ -190,7 +190,7 @@ int runBallisticLimit(const SweepOptions& o, const BallisticLimitOptions& bl) {
             fmt::format("--d-min {} / --d-max {}: allowed: 0 < d-min < d-max", lo, hi));
       speeds.push_back({v, shield::CriticalDiameterSearch(lo, hi, bl.tolerance), {}, {}});
     }
-    const auto caseOf = [&](double v, double d) { return ShieldCase{bl.solver, v, d, {}, {}, {}}; };
+    const auto caseOf = [&](double v, double d) { return ShieldCase{base.solver, v, d, {}, {}, {}}; };
     detail::CaseRunner runner(base, o);
 
     const auto write = [&] {
@@ -239,7 +239,7 @@ int runBallisticLimit(const SweepOptions& o, const BallisticLimitOptions& bl) {
       writeTextAtomically(
           o.out / "ballistic_limit.json",
           json{{"shield", shieldJson(base)},
-               {"solver", cases::toString(bl.solver)},
+               {"solver", cases::toString(base.solver)},
                {"tolerance", bl.tolerance},
                {"tolerance_definition", "(failed - survived) <= tolerance * midpoint"},
                {"points", points},

@@ -56,17 +56,15 @@ std::string RearWallState::mode() const {
   return "intact";
 }
 
-std::optional<RearWallConfig> rearWallConfigFromScene(const cases::Scene& scene) {
-  const auto it = std::find_if(scene.bodies.begin(), scene.bodies.end(),
-                               [](const cases::Body& b) { return b.name == "rear_wall"; });
-  if (it == scene.bodies.end() || !std::holds_alternative<cases::Rect>(it->shape))
-    return std::nullopt;
-  const auto& r = std::get<cases::Rect>(it->shape);
+namespace {
+RearWallConfig plateConfig(const cases::Scene& scene, const cases::Body& body) {
+  const auto& r = std::get<cases::Rect>(body.shape);
   RearWallConfig c;
+  c.name = body.name;
   c.zMin = r.zmin;
   c.zMax = r.zmax;
   c.radius = r.xmax;
-  c.rho0 = scene.materials.at(static_cast<std::size_t>(it->material)).rho0();
+  c.rho0 = scene.materials.at(static_cast<std::size_t>(body.material)).rho0();
   // The impact runs along the projectile's velocity (the first moving body).
   for (const auto& b : scene.bodies)
     if (b.velocity.z != 0.0) {
@@ -75,23 +73,65 @@ std::optional<RearWallConfig> rearWallConfigFromScene(const cases::Scene& scene)
     }
   return c;
 }
+}  // namespace
 
-RearWallState measureRearWall(const Snapshot& s, const RearWallConfig& cfg, double spacing) {
+std::optional<RearWallConfig> rearWallConfigFromScene(const cases::Scene& scene) {
+  const auto it = std::find_if(scene.bodies.begin(), scene.bodies.end(),
+                               [](const cases::Body& b) { return b.name == "rear_wall"; });
+  if (it == scene.bodies.end() || !std::holds_alternative<cases::Rect>(it->shape))
+    return std::nullopt;
+  return plateConfig(scene, *it);
+}
+
+std::vector<RearWallConfig> plateConfigsFromScene(const cases::Scene& scene) {
+  std::vector<RearWallConfig> out;
+  // Columns of an r-z grid are rings about the axis, so an opening that starts at the first
+  // column is an aperture on the impact axis; a planar plate has no such axis in its grid.
+  if (scene.geometry != Geometry::Axisymmetric) return out;
+  for (const auto& b : scene.bodies) {
+    if (!std::holds_alternative<cases::Rect>(b.shape)) continue;
+    const auto& r = std::get<cases::Rect>(b.shape);
+    if (r.xmin > 1e-12 || b.velocity.x != 0.0 || b.velocity.z != 0.0) continue;
+    out.push_back(plateConfig(scene, b));
+  }
+  return out;
+}
+
+double RearWallState::holeRadius() const {
+  for (const auto& h : holes)
+    if (h.rInner <= 0.0) return h.rOuter;
+  return 0.0;
+}
+
+namespace {
+
+// The object index of the plate `cfg.name` and the velocity field; throws InputError naming
+// what the snapshot lacks.
+int plateObject(const Snapshot& s, const RearWallConfig& cfg) {
   const auto nameIt = std::find(s.objectNames.begin(), s.objectNames.end(), cfg.name);
   if (s.find("object") == nullptr || nameIt == s.objectNames.end())
     throw InputError(
-        fmt::format("rear-wall failure: the {} snapshot at t = {} us has no object "
+        fmt::format("plate failure: the {} snapshot at t = {} us has no object "
                     "named '{}' (objects: {})",
                     s.solver, s.time, cfg.name, fmt::join(s.objectNames, ", ")));
   const Field* vel = s.find("velocity");
   if (vel == nullptr || vel->components != 2)
-    throw InputError(fmt::format("rear-wall failure: the {} snapshot at t = {} us has no velocity",
+    throw InputError(fmt::format("plate failure: the {} snapshot at t = {} us has no velocity",
                                  s.solver, s.time));
-  const int wall = static_cast<int>(nameIt - s.objectNames.begin());
-  const double h = spacing > 0.0                    ? spacing
-                   : s.kind == Snapshot::Kind::Grid ? std::max(s.grid.dx, s.grid.dz)
-                                                    : compare::nativeSpacing(s);
-  const compare::Resampled r = compare::resample(s, compare::coveringGrid(s, h));
+  return static_cast<int>(nameIt - s.objectNames.begin());
+}
+
+double measureSpacing(const Snapshot& s, double spacing) {
+  return spacing > 0.0                    ? spacing
+         : s.kind == Snapshot::Kind::Grid ? std::max(s.grid.dx, s.grid.dz)
+                                          : compare::nativeSpacing(s);
+}
+
+// One plate of `s`, on the grid `r` (of spacing h) resampled from it.
+RearWallState measureOn(const Snapshot& s, const compare::Resampled& r, double h,
+                        const RearWallConfig& cfg) {
+  const int wall = plateObject(s, cfg);
+  const Field* vel = s.find("velocity");
   const GridSpec& g = r.grid;
   const bool rz = s.geometry == Geometry::Axisymmetric;
 
@@ -215,6 +255,26 @@ RearWallState measureRearWall(const Snapshot& s, const RearWallConfig& cfg, doub
   return st;
 }
 
+}  // namespace
+
+RearWallState measureRearWall(const Snapshot& s, const RearWallConfig& cfg, double spacing) {
+  (void)plateObject(s, cfg);  // refuse a snapshot without the plate before resampling it
+  const double h = measureSpacing(s, spacing);
+  return measureOn(s, compare::resample(s, compare::coveringGrid(s, h)), h, cfg);
+}
+
+std::vector<RearWallState> measurePlates(const Snapshot& s,
+                                         const std::vector<RearWallConfig>& plates,
+                                         double spacing) {
+  std::vector<RearWallState> out;
+  if (plates.empty()) return out;
+  for (const auto& p : plates) (void)plateObject(s, p);
+  const double h = measureSpacing(s, spacing);
+  const compare::Resampled r = compare::resample(s, compare::coveringGrid(s, h));
+  for (const auto& p : plates) out.push_back(measureOn(s, r, h, p));
+  return out;
+}
+
 RearWallState measureRearWall(const std::filesystem::path& h5) {
   std::string toml;
   const Snapshot s = io::readHdf5(h5, &toml);
@@ -248,6 +308,55 @@ nlohmann::json toJson(const RearWallState& s) {
           {"thinnest_areal_fraction", s.thinnestFraction},
           {"thinnest_at_r_cm", s.thinnestRadius},
           {"main_velocity_z_cm_per_us", s.mainVelocityZ}};
+}
+
+nlohmann::json plateJson(const std::string& name, const RearWallState& s) {
+  nlohmann::json j = toJson(s);
+  j["name"] = name;
+  j["hole_radius_cm"] = s.holeRadius();
+  j["spalled"] = s.detachedSpall();
+  return j;
+}
+
+nlohmann::json platesSummary(const nlohmann::json& perSnapshot) {
+  // Each plate's states in time order, by name, in the order the plates first appear.
+  std::vector<std::pair<std::string, nlohmann::json>> byName;
+  for (const auto& plates : perSnapshot) {
+    if (!plates.is_array()) continue;
+    for (const auto& p : plates) {
+      const std::string name = p.at("name");
+      auto it = std::find_if(byName.begin(), byName.end(),
+                             [&](const auto& e) { return e.first == name; });
+      if (it == byName.end()) it = byName.insert(byName.end(), {name, nlohmann::json::array()});
+      it->second.push_back(p);
+    }
+  }
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& [name, states] : byName) {
+    nlohmann::json v = failureVerdict(states);
+    const nlohmann::json& last = states.back();
+    nlohmann::json spallAt = nullptr;
+    for (const auto& st : states)
+      if (st.value("spalled", false)) {
+        spallAt = st;
+        break;
+      }
+    double maxHole = 0.0;
+    for (const auto& st : states) maxHole = std::max(maxHole, st.value("hole_radius_cm", 0.0));
+    out.push_back({{"name", name},
+                   {"hole_radius_cm", last.value("hole_radius_cm", 0.0)},
+                   {"hole_radius_time_us", last.at("time_us")},
+                   {"max_hole_radius_cm", maxHole},
+                   {"perforated", v.at("perforated")},
+                   {"first_time_us", v.at("first_time_us")},
+                   {"mode", v.at("mode")},
+                   {"spalled", !spallAt.is_null()},
+                   {"spall_first_time_us", spallAt.is_null() ? nlohmann::json(nullptr)
+                                                              : spallAt.at("time_us")},
+                   {"spall", spallAt.is_null() ? nlohmann::json::array() : spallAt.at("spall")},
+                   {"evidence", v.at("evidence")}});
+  }
+  return out;
 }
 
 nlohmann::json failureVerdict(const nlohmann::json& states) {

@@ -164,7 +164,19 @@ ShieldSpec parseShield(std::string_view text, const std::string& sourceName) {
   }
 
   if (const auto* res = root["resolution"].as_table()) {
-    r.rejectUnknown(*res, "resolution", {"cells_across_projectile", "cells_across_thinnest_wall"});
+    r.rejectUnknown(*res, "resolution",
+                    {"cells_across_projectile", "cells_across_thinnest_wall", "spacing"});
+    // A fixed spacing replaces the two knobs; both at once would leave one of them unused
+    // without a word, so that is refused.
+    if (res->contains("spacing")) {
+      for (const char* k : {"cells_across_projectile", "cells_across_thinnest_wall"})
+        if (res->contains(k))
+          r.fail(res->get(k), std::string("resolution.") + k,
+                 "given with resolution.spacing, which replaces it",
+                 "either spacing alone or the cells_across_* knobs");
+      s.resolution.spacing =
+          r.quantity(*res, "spacing", "resolution.spacing", Dimension::Length, true);
+    }
     s.resolution.cellsAcrossProjectile =
         r.number(*res, "cells_across_projectile", "resolution.cells_across_projectile", 8.0, 1.0);
     s.resolution.cellsAcrossThinnestWall = r.number(

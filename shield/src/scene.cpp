@@ -29,6 +29,7 @@ double ShieldSpec::thinnestWall() const {
 }
 
 double ShieldSpec::spacing() const {
+  if (resolution.spacing) return *resolution.spacing;
   return std::min(projectile.diameter / resolution.cellsAcrossProjectile,
                   thinnestWall() / resolution.cellsAcrossThinnestWall);
 }
@@ -115,10 +116,15 @@ std::string sceneToml(const ShieldSpec& s) {
       "rear_wall_cm={:.6g} bumper_cm={:.6g}\n",
       cases::toString(s.solver), s.projectile.speed, d, S, rear.thickness,
       s.walls.front().thickness);
+  const std::string rule =
+      s.resolution.spacing
+          ? std::string("the declaration's fixed resolution.spacing")
+          : fmt::format("min(d / {:g}, thinnest wall / {:g})", s.resolution.cellsAcrossProjectile,
+                        s.resolution.cellsAcrossThinnestWall);
   out += fmt::format(
-      "# Layout (cm): spacing {:.6g} = min(d / {:g}, thinnest wall / {:g}); plates of radius "
-      "{:.6g}; {:.6g} behind the rear wall; end time 2 S / V + 10 t_w / (0.5 cm/us).\n",
-      h, s.resolution.cellsAcrossProjectile, s.resolution.cellsAcrossThinnestWall, radius, behind);
+      "# Layout (cm): spacing {:.6g} = {}; plates of radius {:.6g}; {:.6g} behind the rear "
+      "wall; end time 2 S / V + 10 t_w / (0.5 cm/us).\n",
+      h, rule, radius, behind);
   const bool withFracture =
       std::find(strength.begin(), strength.end(), "fracture") != strength.end();
   out += fmt::format("# Strength and fracture: {}.\n",

@@ -225,6 +225,27 @@ TEST(BallisticLimit, BisectsToTheFailureThresholdAndResumes) {
   EXPECT_EQ(test::readJson(f.dir / "out" / "ballistic_limit.json").at("points"), j.at("points"));
 }
 
+TEST(BallisticLimit, SolverDefaultsToTheDeclarationsAndTheOptionOverridesIt) {
+  // The coarse example declares solver = "sph": without --solver its cases are SPH runs (one
+  // command reproduces its curve); --solver tvd still chooses TVD.
+  Fake f("bl_solver");
+  SweepOptions o = f.options();
+  o.shield = fs::path(HVI_SOURCE_DIR) / "shield" / "examples" / "whipple_tp2003_coarse.toml";
+  BallisticLimitOptions bl;
+  bl.speeds = {7.0};
+  bl.tolerance = 0.5;
+  ASSERT_EQ(runBallisticLimit(o, bl), kOk);
+  ASSERT_FALSE(f.calls().empty());
+  for (const auto& c : f.calls()) EXPECT_EQ(c.substr(0, 6), "sph_v7") << c;
+  EXPECT_EQ(test::readJson(f.dir / "out" / "ballistic_limit.json").at("solver"), "sph");
+  o.out = f.dir / "out_tvd";
+  bl.solver = cases::SolverKind::Tvd;
+  const std::size_t before = f.calls().size();
+  ASSERT_EQ(runBallisticLimit(o, bl), kOk);
+  ASSERT_GT(f.calls().size(), before);
+  EXPECT_EQ(f.calls().back().substr(0, 6), "tvd_v7");
+}
+
 }  // namespace
 }  // namespace hvi::app
 
@@ -268,10 +289,37 @@ cells_across_thinnest_wall = 2
     for (const auto& e : ts.at("snapshots")) {
       ASSERT_TRUE(e.contains("rear_wall")) << solver;
       EXPECT_EQ(e.at("rear_wall").at("mode"), "intact") << solver;
+      // Every plate, bumper first; the rear wall's entry is the rear_wall record plus the name,
+      // the hole radius and the spall flag.
+      ASSERT_TRUE(e.contains("plates")) << solver;
+      ASSERT_EQ(e.at("plates").size(), 2u) << solver;
+      EXPECT_EQ(e.at("plates")[0].at("name"), "bumper");
+      auto rear = e.at("plates")[1];
+      EXPECT_EQ(rear.at("name"), "rear_wall");
+      EXPECT_DOUBLE_EQ(rear.at("hole_radius_cm").get<double>(), 0.0) << solver;
+      EXPECT_FALSE(rear.at("spalled").get<bool>()) << solver;
+      for (const char* k : {"name", "hole_radius_cm", "spalled"}) rear.erase(k);
+      EXPECT_EQ(rear, e.at("rear_wall")) << solver;
     }
+    // The bumper's entry follows the bumper: whole at t = 0; at 0.4 us the sphere's front has
+    // moved 0.28 cm, past the 0.1 cm bumper's thickness, pushing the bumper's plug ahead of it,
+    // so the bumper is thinned on the axis (more than 10 %: measured 0.30 TVD, 0.44 SPH; the
+    // plug still rides on the sphere, so no aperture yet).
+    const auto& snaps = ts.at("snapshots");
+    const auto& b0 = snaps.front().at("plates")[0];
+    const auto& b1 = snaps.back().at("plates")[0];
+    EXPECT_DOUBLE_EQ(b0.at("hole_radius_cm").get<double>(), 0.0);
+    EXPECT_NEAR(b0.at("thinnest_areal_fraction").get<double>(), 1.0, 1e-9) << solver;
+    EXPECT_LT(b1.at("thinnest_areal_fraction").get<double>(), 0.9) << solver;
+    EXPECT_LT(b1.at("thinnest_at_r_cm").get<double>(), 0.1) << solver;  // the sphere's radius
     const auto sum = test::readJson(o.out / "summary.json");
     ASSERT_TRUE(sum.contains("rear_wall_failure")) << solver;
     EXPECT_FALSE(sum.at("rear_wall_failure").at("perforated").get<bool>());
+    ASSERT_TRUE(sum.contains("plates")) << solver;
+    ASSERT_EQ(sum.at("plates").size(), 2u);
+    EXPECT_EQ(sum.at("plates")[0].at("hole_radius_cm"),
+              snaps.back().at("plates")[0].at("hole_radius_cm"));
+    EXPECT_FALSE(sum.at("plates")[1].at("spalled").get<bool>());
   }
 }
 

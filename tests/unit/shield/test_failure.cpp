@@ -206,6 +206,153 @@ TEST(RearWallFailure, ParticleSnapshots) {
   EXPECT_NEAR(sp.spall[0].centroidZ, 0.65, 1e-12);
 }
 
+// Every plate, not only the rear wall: a bumper with a 0.3 cm aperture at the axis and one of
+// its fragments (a 0.2 cm disk, 0.1 cm thick) thrown 0.1 cm behind it at -0.3 cm/us, over an
+// intact rear wall with debris on it.
+RearWallConfig bumperConfig() {
+  RearWallConfig c = config();
+  c.name = "bumper";
+  c.zMin = 1.4;
+  c.zMax = 1.5;
+  return c;
+}
+int bumperScene(double x, double z) {
+  if (z > 1.4 && z < 1.5 && x > 0.3) return 1;
+  if (z > 1.2 && z < 1.3 && x < 0.2) return 1;
+  if (inWall(z)) return 2;
+  if (z > 1.0 && z < 1.1 && x < 0.5) return 0;
+  return -1;
+}
+double bumperFragmentMoves(double, double z) { return z > 1.1 && z < 1.4 ? -0.3 : 0.0; }
+
+TEST(PlateFailure, HoleRadiusAndSpallFlagOfEachPlate) {
+  const Snapshot s = grid(bumperScene, bumperFragmentMoves);
+  const auto st = measurePlates(s, {bumperConfig(), config()});
+  ASSERT_EQ(st.size(), 2u);
+  // The bumper: open columns 0..5 (centres 0.025..0.275 cm), so the aperture ends at the
+  // face r = 0.3; the fragment is spall (downrange of the bumper, moving away from it), with
+  // its ring mass 2.7 pi 0.2^2 0.1.
+  EXPECT_NEAR(st[0].holeRadius(), 0.3, 1e-12);
+  ASSERT_TRUE(st[0].detachedSpall());
+  ASSERT_EQ(st[0].spall.size(), 1u);
+  EXPECT_NEAR(st[0].spall[0].velocityZ, -0.3, 1e-12);
+  EXPECT_NEAR(st[0].spall[0].mass, 2.7 * std::numbers::pi * 0.04 * 0.1, 1e-9);
+  EXPECT_EQ(st[0].mode(), "through_hole_and_spall");
+  // The rear wall: closed at the axis, nothing detached; the same state as measured alone.
+  EXPECT_DOUBLE_EQ(st[1].holeRadius(), 0.0);
+  EXPECT_FALSE(st[1].detachedSpall());
+  EXPECT_EQ(toJson(st[1]), toJson(measureRearWall(s, config())));
+  // The plate's record entry carries the name, the hole radius and the flag.
+  const nlohmann::json j = plateJson("bumper", st[0]);
+  EXPECT_EQ(j.at("name"), "bumper");
+  EXPECT_NEAR(j.at("hole_radius_cm").get<double>(), 0.3, 1e-12);
+  EXPECT_TRUE(j.at("spalled").get<bool>());
+  // A ring opening away from the axis (a circumferential tear) is a hole but no aperture on the
+  // axis: hole radius 0; with an aperture too, the aperture's.
+  RearWallState ring;
+  ring.holes.push_back({1.0, 1.1, std::numbers::pi * (1.21 - 1.0)});
+  EXPECT_TRUE(ring.throughHole());
+  EXPECT_DOUBLE_EQ(ring.holeRadius(), 0.0);
+  ring.holes.push_back({0.0, 0.4, std::numbers::pi * 0.16});
+  EXPECT_DOUBLE_EQ(ring.holeRadius(), 0.4);
+}
+
+TEST(PlateFailure, ParticleSnapshotsOfEachPlate) {
+  const auto st = measurePlates(particles(bumperScene, bumperFragmentMoves),
+                                {bumperConfig(), config()});
+  ASSERT_EQ(st.size(), 2u);
+  // The kernel smears the aperture's edge over about one particle spacing.
+  EXPECT_NEAR(st[0].holeRadius(), 0.3, kDx + 1e-9);
+  ASSERT_EQ(st[0].spall.size(), 1u);
+  EXPECT_NEAR(st[0].spall[0].mass, 2.7 * std::numbers::pi * 0.04 * 0.1, 1e-12);
+  EXPECT_NEAR(st[0].spall[0].velocityZ, -0.3, 1e-12);
+  EXPECT_DOUBLE_EQ(st[1].holeRadius(), 0.0);
+  EXPECT_FALSE(st[1].perforated());
+}
+
+TEST(PlateFailure, SummaryKeepsTheLastHoleAndTheFirstSpall) {
+  // Three snapshots of the bumper: an aperture of 0.2, 0.3 and 0.35 cm; spall seen only at 2 us
+  // (the fragment has left the domain by 3 us). The rear wall stays intact.
+  const auto bumper = [](double t, double r, bool spall) {
+    RearWallState s;
+    s.time = t;
+    s.holes.push_back({0.0, r, std::numbers::pi * r * r});
+    if (spall) s.spall.push_back({0.03, 0.1, 1.25, 1.2, 1.3, 0.2, -0.3, 16});
+    return plateJson("bumper", s);
+  };
+  const auto rear = [](double t) {
+    RearWallState s;
+    s.time = t;
+    return plateJson("rear_wall", s);
+  };
+  const nlohmann::json per = nlohmann::json::array(
+      {nlohmann::json::array({bumper(1, 0.2, false), rear(1)}),
+       nlohmann::json::array({bumper(2, 0.3, true), rear(2)}),
+       nlohmann::json::array({bumper(3, 0.35, false), rear(3)})});
+  const nlohmann::json sum = platesSummary(per);
+  ASSERT_EQ(sum.size(), 2u);
+  const auto& b = sum[0];
+  EXPECT_EQ(b.at("name"), "bumper");
+  EXPECT_DOUBLE_EQ(b.at("hole_radius_cm").get<double>(), 0.35);
+  EXPECT_DOUBLE_EQ(b.at("hole_radius_time_us").get<double>(), 3.0);
+  EXPECT_DOUBLE_EQ(b.at("max_hole_radius_cm").get<double>(), 0.35);
+  EXPECT_TRUE(b.at("perforated").get<bool>());
+  EXPECT_DOUBLE_EQ(b.at("first_time_us").get<double>(), 1.0);
+  EXPECT_TRUE(b.at("spalled").get<bool>());
+  EXPECT_DOUBLE_EQ(b.at("spall_first_time_us").get<double>(), 2.0);
+  ASSERT_EQ(b.at("spall").size(), 1u);
+  EXPECT_DOUBLE_EQ(b.at("spall")[0].at("mass_g").get<double>(), 0.03);
+  const auto& w = sum[1];
+  EXPECT_EQ(w.at("name"), "rear_wall");
+  EXPECT_DOUBLE_EQ(w.at("hole_radius_cm").get<double>(), 0.0);
+  EXPECT_FALSE(w.at("spalled").get<bool>());
+  EXPECT_TRUE(w.at("spall_first_time_us").is_null());
+  EXPECT_FALSE(w.at("perforated").get<bool>());
+}
+
+TEST(PlateFailure, PlatesOfAShieldScene) {
+  // A three-wall shield: bumper, wall_2 and rear_wall, each from the axis at rest; the
+  // projectile (a moving disk) is no plate; a planar scene has none.
+  const ShieldSpec spec = parseShield(R"(
+radius = "1 cm"
+[projectile]
+material = "al2017_t4"
+diameter = "0.2 cm"
+speed = "7 km/s"
+[[walls]]
+material = "al6061_t6"
+thickness = "0.1 cm"
+[[walls]]
+material = "al1100_o"
+thickness = "0.1 cm"
+gap = "0.5 cm"
+[[walls]]
+material = "al2024_t3"
+thickness = "0.2 cm"
+gap = "1 cm"
+)",
+                                      "s.toml");
+  cases::Scene scene = cases::parseScene(sceneToml(spec), "generated");
+  const auto plates = plateConfigsFromScene(scene);
+  ASSERT_EQ(plates.size(), 3u);
+  EXPECT_EQ(plates[0].name, "bumper");
+  EXPECT_EQ(plates[1].name, "wall_2");
+  EXPECT_EQ(plates[2].name, "rear_wall");
+  for (const auto& p : plates) EXPECT_EQ(p.direction, -1);
+  EXPECT_NEAR(plates[0].zMax - plates[0].zMin, 0.1, 1e-6);
+  EXPECT_NEAR(plates[1].zMax - plates[2].zMax, 1.0 + 0.1, 1e-6);  // gap + own thickness
+  EXPECT_NEAR(plates[0].rho0, 2.70, 1e-12);
+  EXPECT_NEAR(plates[1].rho0, 2.71, 1e-12);
+  EXPECT_NEAR(plates[2].rho0, 2.77, 1e-12);
+  const auto rw = rearWallConfigFromScene(scene);
+  ASSERT_TRUE(rw.has_value());
+  EXPECT_EQ(rw->name, plates[2].name);
+  EXPECT_DOUBLE_EQ(rw->zMin, plates[2].zMin);
+  EXPECT_DOUBLE_EQ(rw->radius, plates[2].radius);
+  scene.geometry = Geometry::Planar;
+  EXPECT_TRUE(plateConfigsFromScene(scene).empty());
+}
+
 TEST(RearWallFailure, VerdictTakesTheFirstFailedSnapshot) {
   RearWallState ok, bad;
   ok.time = 1.0;

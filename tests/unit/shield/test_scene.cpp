@@ -71,6 +71,23 @@ TEST(ShieldScene, ExampleParsesAndGeneratesAValidScene) {
               std::round(scene.domain.xmax / scene.tvd.cellSize), 1e-6);
 }
 
+TEST(ShieldScene, CoarseExampleHasOneSpacingForEveryDiameter) {
+  // The coarse example: the same shield as the example, SPH, one fixed spacing (bumper / 3) that
+  // the generated scene carries whatever the diameter, where the example refines as d / 8.
+  ShieldSpec coarse = loadShield(std::string(HVI_SOURCE_DIR) +
+                                 "/shield/examples/whipple_tp2003_coarse.toml");
+  ShieldSpec fine = loadShield(kExample);
+  EXPECT_EQ(coarse.solver, cases::SolverKind::Sph);
+  EXPECT_DOUBLE_EQ(coarse.standoff(), fine.standoff());
+  for (double d : {0.2, 0.634, 1.2}) {
+    coarse.projectile.diameter = fine.projectile.diameter = d;
+    EXPECT_NEAR(coarse.spacing(), 0.0423333, 1e-12) << d;
+    EXPECT_NEAR(buildScene(coarse).sph.spacing, 0.0423333, 1e-12) << d;
+    EXPECT_NEAR(fine.spacing(), std::min(d / 8.0, 0.127 / 3.0), 1e-12) << d;
+  }
+  EXPECT_NE(sceneToml(coarse).find("fixed resolution.spacing"), std::string::npos);
+}
+
 TEST(ShieldScene, SphSceneAndStandoffScaling) {
   ShieldSpec s = parseShield("solver = \"sph\"\n" + std::string(kTwoWalls), "s.toml");
   EXPECT_EQ(s.walls.front().name, "bumper");
@@ -158,6 +175,15 @@ TEST(ShieldScene, BadInputNamesFileKeyAndAllowedValues) {
 
   e = errorOf("colour = 1\n" + std::string(kTwoWalls));
   EXPECT_NE(e.find("colour: unknown key"), std::string::npos) << e;
+
+  // A fixed spacing replaces the knobs: both at once is refused, naming the knob.
+  e = errorOf(std::string(kTwoWalls) +
+              "[resolution]\nspacing = \"0.02 cm\"\ncells_across_projectile = 8\n");
+  EXPECT_NE(e.find("resolution.cells_across_projectile: given with resolution.spacing"),
+            std::string::npos)
+      << e;
+  e = errorOf(std::string(kTwoWalls) + "[resolution]\nspacing = \"0.02 kg\"\n");
+  EXPECT_NE(e.find("resolution.spacing"), std::string::npos) << e;
 
   EXPECT_THROW((void)loadShield("/nonexistent/shield.toml"), InputError);
 }

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <set>
 #include <sstream>
 #include <variant>
@@ -15,6 +14,7 @@
 #include "hvi/cases/names.hpp"
 #include "hvi/sph/fill.hpp"
 #include "hvi/sph/sph.hpp"
+#include "hvi/test/same_bits.hpp"
 #include "hvi/test/sph_test_scenes.hpp"
 
 namespace hvi::sph {
@@ -374,16 +374,20 @@ TEST(SphStrength, RestartIsBitForBit) {
   SphSolver restarted(s);
   restarted.readCheckpoint(ckpt);
   for (int k = 0; k < 15; ++k) restarted.advance(1e9);
-  const auto same = [](const std::vector<double>& x, const std::vector<double>& y) {
-    return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(double)) == 0;
-  };
   const ParticleSystem a = original.stepper().particles(), b = restarted.stepper().particles();
   const StrengthFields fa = original.stepper().strengthFields(),
                        fb = restarted.stepper().strengthFields();
   EXPECT_EQ(original.time(), restarted.time());
-  EXPECT_TRUE(same(a.vx, b.vx) && same(a.vz, b.vz) && same(a.e, b.e) && same(a.p, b.p));
-  EXPECT_TRUE(same(fa.sxx, fb.sxx) && same(fa.szz, fb.szz) && same(fa.sxz, fb.sxz));
-  EXPECT_TRUE(same(fa.plasticStrain, fb.plasticStrain) && same(fa.damage, fb.damage));
+  using hvi::test::sameBits;
+  EXPECT_TRUE(sameBits(a.vx, b.vx));
+  EXPECT_TRUE(sameBits(a.vz, b.vz));
+  EXPECT_TRUE(sameBits(a.e, b.e));
+  EXPECT_TRUE(sameBits(a.p, b.p));
+  EXPECT_TRUE(sameBits(fa.sxx, fb.sxx));
+  EXPECT_TRUE(sameBits(fa.szz, fb.szz));
+  EXPECT_TRUE(sameBits(fa.sxz, fb.sxz));
+  EXPECT_TRUE(sameBits(fa.plasticStrain, fb.plasticStrain));
+  EXPECT_TRUE(sameBits(fa.damage, fb.damage));
   const auto maxEps = *std::max_element(fa.plasticStrain.begin(), fa.plasticStrain.end());
   const auto maxD = *std::max_element(fa.damage.begin(), fa.damage.end());
   std::printf("restart: max eps_p %.3f, max D %.2f\n", maxEps, maxD);

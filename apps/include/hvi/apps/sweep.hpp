@@ -56,7 +56,7 @@ int runSweep(const SweepOptions& opt, const SweepGrid& grid);
 //! `tolerance`, from [dMin, dMax] (default: 0.5 and 2 times the BLE's d_c). Writes
 //! <out>/ballistic_limit.json, .csv and (with /usr/bin/python3) .png.
 struct BallisticLimitOptions {
-  cases::SolverKind solver = cases::SolverKind::Tvd;
+  std::optional<cases::SolverKind> solver;  //!< absent: the declaration's `solver`
   std::vector<double> speeds;  //!< km/s
   double tolerance = 0.05;
   std::optional<double> dMin, dMax;  //!< cm

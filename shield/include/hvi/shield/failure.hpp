@@ -29,6 +29,10 @@ struct RearWallConfig {
 
 //! The config of a scene's body named "rear_wall" (a rect); nullopt if it has none.
 std::optional<RearWallConfig> rearWallConfigFromScene(const cases::Scene& scene);
+//! Every plate of an r-z scene, in body order: each rect body at rest that starts at the axis
+//! (a shield scene's bumper, intermediate walls and rear wall; the study's plate). A
+//! RearWallConfig measures any plate. Empty for a planar scene.
+std::vector<RearWallConfig> plateConfigsFromScene(const cases::Scene& scene);
 
 //! A connected piece of rear-wall material separated from the wall's main piece.
 struct Fragment {
@@ -57,6 +61,9 @@ struct RearWallState {
   [[nodiscard]] bool throughHole() const { return !holes.empty(); }
   [[nodiscard]] bool detachedSpall() const { return !spall.empty(); }
   [[nodiscard]] bool perforated() const { return throughHole() || detachedSpall(); }
+  //! The aperture on the axis: rOuter of the opening that starts at r = 0 (0: the plate is
+  //! closed at the axis; a ring tear elsewhere is in `holes` only).
+  [[nodiscard]] double holeRadius() const;
   //! "intact", "through_hole", "detached_spall" or "through_hole_and_spall".
   [[nodiscard]] std::string mode() const;
 };
@@ -65,10 +72,21 @@ struct RearWallState {
 //! or `spacing` if > 0). Needs the "object" and "velocity" fields; throws InputError naming
 //! what is missing.
 RearWallState measureRearWall(const Snapshot& s, const RearWallConfig& cfg, double spacing = 0.0);
+//! Several plates of one snapshot, measured on one resampled grid (each as measureRearWall).
+std::vector<RearWallState> measurePlates(const Snapshot& s,
+                                         const std::vector<RearWallConfig>& plates,
+                                         double spacing = 0.0);
 //! From an hvi HDF5 snapshot: the config from the scene stored in the file.
 RearWallState measureRearWall(const std::filesystem::path& h5);
 
 nlohmann::json toJson(const RearWallState& s);
+//! toJson plus the plate's `name`, its `hole_radius_cm` (holeRadius()) and `spalled`
+//! (detachedSpall()): one entry of a snapshot's `plates` (docs/output.md).
+nlohmann::json plateJson(const std::string& name, const RearWallState& s);
+//! Per plate over a run, from its snapshots' `plates` arrays (time order): the last hole radius
+//! and the largest, the failure verdict (failureVerdict), and the spall flag with the first
+//! snapshot that shows a detached spall and its pieces.
+nlohmann::json platesSummary(const nlohmann::json& perSnapshot);
 //! The run's verdict from its per-snapshot states (as toJson wrote them, in time order): failed
 //! at the first snapshot that shows perforation, with that snapshot's evidence; else the last.
 nlohmann::json failureVerdict(const nlohmann::json& states);

@@ -40,10 +40,13 @@ struct Projectile {
 };
 
 //! The resolution knobs: the cell size (TVD) or particle spacing (SPH) is the smaller of
-//! diameter / cellsAcrossProjectile and thinnest wall / cellsAcrossThinnestWall.
+//! diameter / cellsAcrossProjectile and thinnest wall / cellsAcrossThinnestWall, or, when
+//! `spacing` is given, that one length for every case (a sweep's small projectiles then cost
+//! no more than its large ones: the coarse setting, docs/shield.md).
 struct Resolution {
   double cellsAcrossProjectile = 8.0;
   double cellsAcrossThinnestWall = 3.0;
+  std::optional<double> spacing;  //!< cm; replaces the two knobs when set
 };
 
 struct ShieldSpec {
