@@ -331,8 +331,8 @@ class LineSolver {
       if (isVacuum(j)) continue;
       const int mat = Markers ? W_.mat[j] : C_.singleMaterial;
       const double r = W_.w[kRho][j];
-      const bool bad = !(r > 0.0) || !std::isfinite(W_.w[kE][j]) ||
-                       !std::isfinite(W_.w[kMn][j]) || !std::isfinite(W_.w[kMt][j]);
+      const bool bad = !(r > 0.0) || !std::isfinite(W_.w[kE][j]) || !std::isfinite(W_.w[kMn][j]) ||
+                       !std::isfinite(W_.w[kMt][j]);
       if (!bad || V[kRho][j] < C_.rhoThin[mat]) continue;
       for (int nb : {j - 1, j + 1}) {
         if (nb < 2 || nb > n_ + 1 || isVacuum(nb)) continue;

@@ -38,10 +38,11 @@ TEST(TvdStrengthVacuum, TrailingEdgeThinCellPassesTheFailure) {
   // of the 7.2 us runs in docs/strength.md ("Variant 1 without marker lines": -3.4e-3).
   const Budget f = solver.ledger().floors;
   EXPECT_LT(std::abs(f.energy), 1e-3 * t0.energy());
-  std::printf("variant 1 coarse, strength: t = %.3f us, step %ld, mass change %.3g, energy "
-              "change %.3g (floors %.3g)\n",
-              solver.time(), static_cast<long>(solver.step()), t1.mass / t0.mass - 1,
-              t1.energy() / t0.energy() - 1, f.energy / t0.energy());
+  std::printf(
+      "variant 1 coarse, strength: t = %.3f us, step %ld, mass change %.3g, energy "
+      "change %.3g (floors %.3g)\n",
+      solver.time(), static_cast<long>(solver.step()), t1.mass / t0.mass - 1,
+      t1.energy() / t0.energy() - 1, f.energy / t0.energy());
 }
 
 }  // namespace
