@@ -147,6 +147,13 @@ class LineSolver {
       for (int j = 2; j <= n_ + 1; ++j)
         if (W_.fallback[j - 1] || W_.fallback[j]) update(V, j);
       std::fill(W_.fallback.begin(), W_.fallback.begin() + n_ + 4, 0);
+      if (!rescued_ && resetFastThinNeighbours(V)) {
+        // Once per stage: the stage again from its corrected input (nothing booked yet).
+        rescued_ = true;
+        const bool ok = stage(V, fail);
+        rescued_ = false;
+        return ok;
+      }
       for (int j = 2; j <= n_ + 1; ++j) {
         if (isVacuum(j)) continue;
         const int mat = Markers ? W_.mat[j] : C_.singleMaterial;
@@ -307,6 +314,40 @@ class LineSolver {
   // Below the vacuum density a cell is vacuum: it keeps its mass but is set at rest and cold
   // (P = 0). Left alone, the few ulps of momentum and energy that the fluxes of dense
   // neighbours leave in it become huge velocities and sound speeds that set the time step.
+  // The Rusanov flux keeps a cell positive only while dt (|u| + c) / h <= 1/2 on both sides
+  // of its faces. The step's CFL condition ensures that for the step's start, not for the
+  // predictor's result: there a nearly empty (thin) cell can hold a few ulps of mass with a
+  // finite energy, so huge specific energy, sound speed and velocity, and its face then
+  // diffuses more mass out of its dense neighbour than that holds (docs/tvd.md, "Positivity
+  // fallback and vacuum": variant 1 coarse with strength, step 247). Only where the fallback
+  // has left a cell that is not thin unphysical (the run would stop otherwise, so every run
+  // that went on before is unchanged): each thin neighbour of such a cell whose signal speed
+  // breaks that bound is put at rest and cold in the stage's input, its mass kept, the change
+  // booked under floors, as a cell below the vacuum density is. True if any was.
+  bool resetFastThinNeighbours(State4& V) {
+    const double weight = &V == &W_.u0 ? 1.0 : 0.5;  // the stage input's share of the result
+    bool reset = false;
+    for (int j = 2; j <= n_ + 1; ++j) {
+      if (isVacuum(j)) continue;
+      const int mat = Markers ? W_.mat[j] : C_.singleMaterial;
+      const double r = W_.w[kRho][j];
+      const bool bad = !(r > 0.0) || !std::isfinite(W_.w[kE][j]) || !std::isfinite(W_.w[kMn][j]) ||
+                       !std::isfinite(W_.w[kMt][j]);
+      if (!bad || V[kRho][j] < C_.rhoThin[mat]) continue;
+      for (int nb : {j - 1, j + 1}) {
+        if (nb < 2 || nb > n_ + 1 || isVacuum(nb)) continue;
+        const int mn = Markers ? W_.mat[nb] : C_.singleMaterial;
+        if (!(V[kRho][nb] < C_.rhoThin[mn])) continue;
+        const CellState& c = W_.cs[nb];
+        const double reach = C_.dt * W_.invVol[nb] * std::max(W_.area[nb - 1], W_.area[nb]);
+        if (!(reach * (std::abs(c.u) + c.c) > 0.5)) continue;
+        putAtRest(V, nb, weight / W_.invVol[nb], C_.axis, B_.floors);
+        reset = true;
+      }
+    }
+    return reset;
+  }
+
   void resetThin(State4& U, double weight) {
     for (int j = 2; j <= n_ + 1; ++j) {
       if (isVacuum(j)) continue;
@@ -320,6 +361,7 @@ class LineSolver {
   const SweepContext& C_;
   LineBudget& B_;
   const int n_;
+  bool rescued_ = false;  // resetFastThinNeighbours has acted in this stage
 };
 
 }  // namespace hvi::tvd::detail
