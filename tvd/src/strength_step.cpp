@@ -168,8 +168,9 @@ void TvdSolver::strengthStep(double dt) {
   // and carries no deviator (docs/strength.md, "TVD").
   const double rhoSolid = kStrengthDensityFraction * st.rho0;
   const auto& bnd = domain_.boundary;  // xmin, xmax, zmin, zmax
-  const bool reflect[4] = {bnd[0] != cases::Boundary::Outflow, bnd[1] != cases::Boundary::Outflow,
-                           bnd[2] != cases::Boundary::Outflow, bnd[3] != cases::Boundary::Outflow};
+  const detail::StrengthSides reflect = {
+      bnd[0] != cases::Boundary::Outflow, bnd[1] != cases::Boundary::Outflow,
+      bnd[2] != cases::Boundary::Outflow, bnd[3] != cases::Boundary::Outflow};
   const strength::Material& sm = st.material;
 
   // 1. The cell-centred velocity (the state after the sweeps).
@@ -198,50 +199,8 @@ void TvdSolver::strengthStep(double dt) {
             continue;
           }
           const int i = static_cast<int>(c % nx), k = static_cast<int>(c / nx);
-          // d(u, w)/d(along `axis`) from the neighbours: a wall or the axis mirrors the normal
-          // velocity, an outflow side repeats the cell, a vacuum neighbour is left out
-          // (one-sided difference).
           auto derivative = [&](int axis, double& du, double& dw) {
-            const bool lowEdge = axis == 0 ? i == 0 : k == 0;
-            const bool highEdge = axis == 0 ? i == nx - 1 : k == nz - 1;
-            const long stride = axis == 0 ? 1 : nx;
-            const double u0 = st.u[cc], w0 = st.w[cc];
-            double uL = u0, wL = w0, uR = u0, wR = w0;
-            bool hasL = true, hasR = true;
-            if (lowEdge) {
-              if (reflect[axis == 0 ? 0 : 2]) {
-                uL = axis == 0 ? -u0 : u0;
-                wL = axis == 0 ? w0 : -w0;
-              }
-            } else {
-              const auto l = static_cast<std::size_t>(c - stride);
-              hasL = st.live[l] != 0;
-              uL = st.u[l];
-              wL = st.w[l];
-            }
-            if (highEdge) {
-              if (reflect[axis == 0 ? 1 : 3]) {
-                uR = axis == 0 ? -u0 : u0;
-                wR = axis == 0 ? w0 : -w0;
-              }
-            } else {
-              const auto r = static_cast<std::size_t>(c + stride);
-              hasR = st.live[r] != 0;
-              uR = st.u[r];
-              wR = st.w[r];
-            }
-            if (hasL && hasR) {
-              du = (uR - uL) / (2.0 * h);
-              dw = (wR - wL) / (2.0 * h);
-            } else if (hasR) {
-              du = (uR - u0) / h;
-              dw = (wR - w0) / h;
-            } else if (hasL) {
-              du = (u0 - uL) / h;
-              dw = (w0 - wL) / h;
-            } else {
-              du = dw = 0.0;
-            }
+            detail::strengthVelocityDerivative(st, reflect, nx, nz, h, c, i, k, axis, du, dw);
           };
           strength::VelocityGradient g;
           derivative(0, g.xx, g.zx);
@@ -281,32 +240,9 @@ void TvdSolver::strengthStep(double dt) {
   // velocity and the shear traction zero exactly at the wall). Plastic work needs no term of
   // its own: the stress power of the total strain rate is in the energy already.
   // Face value along `axis` between cells a (low) and b (high); b < 0: the domain's edge.
-  struct Flux {
-    double tx = 0.0, tz = 0.0, pe = 0.0;
-  };
-  auto faceFlux = [&](int axis, long a, long b, bool lowEdgeFace) -> Flux {
-    // One side is a ghost at the domain's edge: a mirror (wall, axis) or a copy (outflow).
-    const bool edge = a < 0 || b < 0;
-    const long c = a < 0 ? b : a;
-    const auto cc = static_cast<std::size_t>(c);
-    if (!st.live[cc]) return {};
-    double sxx = st.s[0][cc], szz = st.s[1][cc], sxz = st.s[2][cc], u = st.u[cc], w = st.w[cc];
-    if (edge) {
-      const int side = axis == 0 ? (lowEdgeFace ? 0 : 1) : (lowEdgeFace ? 2 : 3);
-      if (reflect[side]) {
-        // Mirror: the normal velocity and the shear traction vanish on the face.
-        return axis == 0 ? Flux{sxx, 0.0, 0.0} : Flux{0.0, szz, 0.0};
-      }
-      return axis == 0 ? Flux{sxx, sxz, sxx * u + sxz * w} : Flux{sxz, szz, sxz * u + szz * w};
-    }
-    const auto bb = static_cast<std::size_t>(b);
-    if (!st.live[bb]) return {};
-    sxx = 0.5 * (sxx + st.s[0][bb]);
-    szz = 0.5 * (szz + st.s[1][bb]);
-    sxz = 0.5 * (sxz + st.s[2][bb]);
-    u = 0.5 * (u + st.u[bb]);
-    w = 0.5 * (w + st.w[bb]);
-    return axis == 0 ? Flux{sxx, sxz, sxx * u + sxz * w} : Flux{sxz, szz, sxz * u + szz * w};
+  using Flux = detail::StrengthFaceFlux;
+  auto faceFlux = [&](int axis, long a, long b, bool lowEdgeFace) {
+    return detail::strengthFaceFlux(st, reflect, axis, a, b, lowEdgeFace);
   };
   // Planar per cm of depth; r-z per radian (the 2 pi of the ledger below).
   const double twoPi = 2.0 * std::numbers::pi;

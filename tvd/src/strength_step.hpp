@@ -40,6 +40,90 @@ struct StrengthState {
   std::array<std::vector<double>, 5> grad;
 };
 
+//! The sub-step's boundary sides (xmin, xmax, zmin, zmax): true where the side mirrors (a wall
+//! or the axis), false for an outflow side.
+using StrengthSides = std::array<bool, 4>;
+
+//! d(u, w)/d(along `axis`: 0 = x, 1 = z) of the sub-step's velocity (st.u, st.w) at cell
+//! c = k nx + i, from its neighbours: a mirror side reflects the normal velocity, an outflow
+//! side repeats the cell, a cell that is not live is left out (one-sided difference).
+inline void strengthVelocityDerivative(const StrengthState& st, const StrengthSides& reflect,
+                                       int nx, int nz, double h, long c, int i, int k, int axis,
+                                       double& du, double& dw) {
+  const auto cc = static_cast<std::size_t>(c);
+  const bool lowEdge = axis == 0 ? i == 0 : k == 0;
+  const bool highEdge = axis == 0 ? i == nx - 1 : k == nz - 1;
+  const long stride = axis == 0 ? 1 : nx;
+  const double u0 = st.u[cc], w0 = st.w[cc];
+  double uL = u0, wL = w0, uR = u0, wR = w0;
+  bool hasL = true, hasR = true;
+  if (lowEdge) {
+    if (reflect[axis == 0 ? 0 : 2]) {
+      uL = axis == 0 ? -u0 : u0;
+      wL = axis == 0 ? w0 : -w0;
+    }
+  } else {
+    const auto l = static_cast<std::size_t>(c - stride);
+    hasL = st.live[l] != 0;
+    uL = st.u[l];
+    wL = st.w[l];
+  }
+  if (highEdge) {
+    if (reflect[axis == 0 ? 1 : 3]) {
+      uR = axis == 0 ? -u0 : u0;
+      wR = axis == 0 ? w0 : -w0;
+    }
+  } else {
+    const auto r = static_cast<std::size_t>(c + stride);
+    hasR = st.live[r] != 0;
+    uR = st.u[r];
+    wR = st.w[r];
+  }
+  if (hasL && hasR) {
+    du = (uR - uL) / (2.0 * h);
+    dw = (wR - wL) / (2.0 * h);
+  } else if (hasR) {
+    du = (uR - u0) / h;
+    dw = (wR - w0) / h;
+  } else if (hasL) {
+    du = (u0 - uL) / h;
+    dw = (w0 - wL) / h;
+  } else {
+    du = dw = 0.0;
+  }
+}
+
+//! Traction (tx, tz) and its power pe on a face, per unit face area.
+struct StrengthFaceFlux {
+  double tx = 0.0, tz = 0.0, pe = 0.0;
+};
+//! The face value along `axis` between cells a (low) and b (high) of the sub-step's deviator
+//! st.s and velocity; a or b < 0: the domain's edge, whose ghost is a mirror (wall, axis: the
+//! normal velocity and the shear traction vanish on the face) or a copy (outflow). A face next
+//! to a cell that is not live carries nothing.
+inline StrengthFaceFlux strengthFaceFlux(const StrengthState& st, const StrengthSides& reflect,
+                                         int axis, long a, long b, bool lowEdgeFace) {
+  using Flux = StrengthFaceFlux;
+  const bool edge = a < 0 || b < 0;
+  const long c = a < 0 ? b : a;
+  const auto cc = static_cast<std::size_t>(c);
+  if (!st.live[cc]) return {};
+  double sxx = st.s[0][cc], szz = st.s[1][cc], sxz = st.s[2][cc], u = st.u[cc], w = st.w[cc];
+  if (edge) {
+    const int side = axis == 0 ? (lowEdgeFace ? 0 : 1) : (lowEdgeFace ? 2 : 3);
+    if (reflect[side]) return axis == 0 ? Flux{sxx, 0.0, 0.0} : Flux{0.0, szz, 0.0};
+    return axis == 0 ? Flux{sxx, sxz, sxx * u + sxz * w} : Flux{sxz, szz, sxz * u + szz * w};
+  }
+  const auto bb = static_cast<std::size_t>(b);
+  if (!st.live[bb]) return {};
+  sxx = 0.5 * (sxx + st.s[0][bb]);
+  szz = 0.5 * (szz + st.s[1][bb]);
+  sxz = 0.5 * (sxz + st.s[2][bb]);
+  u = 0.5 * (u + st.u[bb]);
+  w = 0.5 * (w + st.w[bb]);
+  return axis == 0 ? Flux{sxx, sxz, sxx * u + sxz * w} : Flux{sxz, szz, sxz * u + szz * w};
+}
+
 //! Per-thread scratch of the advection along one line.
 struct StrengthLineWork {
   explicit StrengthLineWork(int capacity)
