@@ -9,17 +9,16 @@
 namespace hvi::sph::detail {
 namespace {
 
+// The kernel's x-marginal int W(sqrt(u^2 + y^2), 1) dy at nu midpoints u of [-support,
+// support], by the midpoint rule with ny points in y; not normalised.
 template <class K>
-std::vector<double> tabulate(double step) {
+void marginalSums(int nu, int ny, std::vector<double>& u, std::vector<double>& m) {
   const double support = K::support;
-  // x-marginal M(u) = int W(sqrt(u^2 + y^2), 1) dy on a fine grid (midpoint rule, 1e-3).
-  const int nu = 2000;
   const double du = 2.0 * support / nu;
-  std::vector<double> u(nu), m(nu);
-  double norm = 0.0;
+  u.resize(nu);
+  m.resize(nu);
   for (int a = 0; a < nu; ++a) {
     u[a] = -support + (a + 0.5) * du;
-    const int ny = 2000;
     const double ymax = std::sqrt(std::max(support * support - u[a] * u[a], 0.0));
     const double dy = 2.0 * ymax / ny;
     double s = 0.0;
@@ -28,8 +27,19 @@ std::vector<double> tabulate(double step) {
       s += K::value(u[a] * u[a] + y * y, 1.0) * dy;
     }
     m[a] = s;
-    norm += s * du;
   }
+}
+
+template <class K>
+std::vector<double> tabulate(double step) {
+  const double support = K::support;
+  // x-marginal M(u) = int W(sqrt(u^2 + y^2), 1) dy on a fine grid (midpoint rule, 1e-3).
+  const int nu = 2000;
+  const double du = 2.0 * support / nu;
+  std::vector<double> u, m;
+  marginalSums<K>(nu, 2000, u, m);
+  double norm = 0.0;
+  for (int a = 0; a < nu; ++a) norm += m[a] * du;
   std::vector<double> table;
   for (double r = 0.0; r <= support + step; r += step) {
     double f = 0.0, g = 0.0;  // E|r + X| and E sign(r + X)
@@ -49,24 +59,9 @@ std::vector<double> tabulate(double step) {
 // The kernel's x-marginal on nu midpoints of [-support, support], normalised: u, weight.
 template <class K>
 void marginal(int nu, std::vector<double>& u, std::vector<double>& m) {
-  const double support = K::support;
-  const double du = 2.0 * support / nu;
-  u.resize(nu);
-  m.resize(nu);
+  marginalSums<K>(nu, 1000, u, m);
   double norm = 0.0;
-  for (int a = 0; a < nu; ++a) {
-    u[a] = -support + (a + 0.5) * du;
-    const int ny = 1000;
-    const double ymax = std::sqrt(std::max(support * support - u[a] * u[a], 0.0));
-    const double dy = 2.0 * ymax / ny;
-    double s = 0.0;
-    for (int b = 0; b < ny; ++b) {
-      const double y = -ymax + (b + 0.5) * dy;
-      s += K::value(u[a] * u[a] + y * y, 1.0) * dy;
-    }
-    m[a] = s;
-    norm += s;
-  }
+  for (const double s : m) norm += s;
   for (double& v : m) v /= norm;
 }
 
