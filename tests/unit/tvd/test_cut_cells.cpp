@@ -12,16 +12,6 @@ namespace hvi::tvd {
 namespace {
 using namespace hvi::tvd::testing;
 
-std::vector<double> phaseMasses(const TvdSolver& s) {
-  const Phases& ph = s.phases();
-  std::vector<double> m(static_cast<std::size_t>(ph.count), 0.0);
-  for (int p = 0; p < ph.count; ++p)
-    for (long c = 0; c < s.grid().cells(); ++c)
-      m[static_cast<std::size_t>(p)] +=
-          ph.q[static_cast<std::size_t>(p)].rho[static_cast<std::size_t>(c)] * s.cellVolume(c);
-  return m;
-}
-
 double maxSpeed(const TvdSolver& s) {
   const Phases& ph = s.phases();
   double v = 0.0;

@@ -13,16 +13,6 @@ namespace hvi::tvd {
 namespace {
 using namespace hvi::tvd::testing;
 
-std::vector<double> phaseMasses(const TvdSolver& s) {
-  const Phases& ph = s.phases();
-  std::vector<double> m(static_cast<std::size_t>(ph.count), 0.0);
-  for (int p = 0; p < ph.count; ++p)
-    for (long c = 0; c < s.grid().cells(); ++c)
-      m[static_cast<std::size_t>(p)] +=
-          ph.q[static_cast<std::size_t>(p)].rho[static_cast<std::size_t>(c)] * s.cellVolume(c);
-  return m;
-}
-
 // A disk (a second material) strikes an aluminium plate that slides out through the xmax side while the
 // disk's debris leaves through zmin; two bodies of one material (two phases) as well. Each
 // phase's mass in the domain plus what it lost through the outflow sides is its initial mass to

@@ -63,4 +63,15 @@ inline double rhoAt(const TvdSolver& s, int i, int k) {
   return s.conserved().rho[static_cast<std::size_t>(k) * s.grid().nx + i];
 }
 
+//! Each phase's mass in the domain (cut-cell mode), by phase index.
+inline std::vector<double> phaseMasses(const TvdSolver& s) {
+  const Phases& ph = s.phases();
+  std::vector<double> m(static_cast<std::size_t>(ph.count), 0.0);
+  for (int p = 0; p < ph.count; ++p)
+    for (long c = 0; c < s.grid().cells(); ++c)
+      m[static_cast<std::size_t>(p)] +=
+          ph.q[static_cast<std::size_t>(p)].rho[static_cast<std::size_t>(c)] * s.cellVolume(c);
+  return m;
+}
+
 }  // namespace hvi::tvd::testing
