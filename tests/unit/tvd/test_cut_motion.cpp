@@ -120,5 +120,43 @@ TEST(TvdCutMotion, CylinderOnTheAxisKeepsItsState) {
   EXPECT_LT(err, kRoundOff);
 }
 
+// A disk carried diagonally through vacuum (the 20 diameters along x are
+// TvdCutCells.DiskCarriedTwentyDiameters): 4 diameters at (0.4, 0.3) cm/us, every part of its
+// outline sliding along x and z faces at once.
+TEST(TvdCutMotion, DiskCarriedDiagonally) {
+  const double h = 0.05, R = 0.25;
+  const Vec2 v{0.4, 0.3};
+  cases::Scene s = cutScene(-0.4, 2.0, -0.4, 1.6, h);
+  s.materials.push_back(material("aluminium", eos::aluminiumStudy()));
+  s.bodies.push_back(body("disk", 0, cases::Disk{{0.013, 0.021}, R}, {2.79, v, 0.0}));
+  TvdSolver solver(s);
+  const auto m0 = phaseMasses(solver);
+  runTo(solver, 4.0);  // 2 cm: 4 diameters
+  const double err = stateError(solver, {2.79}, v);
+  std::printf("  %ld steps: state error %.3e, mass change %.3e\n", solver.step(), err,
+              phaseMasses(solver)[0] / m0[0] - 1.0);
+  EXPECT_NEAR(phaseMasses(solver)[0], m0[0], 1e-12 * m0[0]);
+  EXPECT_LT(err, kRoundOff);
+}
+
+// r-z: a sphere on the axis carried along it (the disk's r-z counterpart: curved outline, cell
+// volumes growing with r).
+TEST(TvdCutMotion, SphereOnTheAxisKeepsItsState) {
+  const double h = 0.05, R = 0.25;
+  const Vec2 v{0.0, 0.5};
+  cases::Scene s = cutScene(0.0, 0.6, -0.4, 1.6, h, Geometry::Axisymmetric);
+  s.domain.boundary[0] = cases::Boundary::Axis;
+  s.materials.push_back(material("aluminium", eos::aluminiumStudy()));
+  s.bodies.push_back(body("sphere", 0, cases::Disk{{0.0, 0.021}, R}, {2.79, v, 0.0}));
+  TvdSolver solver(s);
+  const auto m0 = phaseMasses(solver);
+  runTo(solver, 2.0);  // 1 cm: 2 diameters
+  const double err = stateError(solver, {2.79}, v);
+  std::printf("  r-z sphere: %ld steps, state error %.3e, mass change %.3e\n", solver.step(), err,
+              phaseMasses(solver)[0] / m0[0] - 1.0);
+  EXPECT_NEAR(phaseMasses(solver)[0], m0[0], 1e-12 * m0[0]);
+  EXPECT_LT(err, kRoundOff);
+}
+
 }  // namespace
 }  // namespace hvi::tvd
