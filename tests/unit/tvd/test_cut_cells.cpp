@@ -180,14 +180,12 @@ TEST(TvdCutCells, DiskCarriedTwentyDiameters) {
   EXPECT_LT(inside, 1e-12);
 }
 
-// Why the disk above loses its interior state (docs/tvd.md, "Open (issue 13)"): the repair
-// leaves a mismatch of ~4e-3 of a cell per step between outline cells on opposite sides of the
-// body (the start-of-step apertures miss the swept volume with opposite signs on the front and
-// back halves), so some outline cells are compressed and some rarefied. With the tension
-// cut-off the rarefied ones cannot pull back: the outline is pushed outward, the lines' area
-// grows (+10 % after 20 diameters), and with the mass exact the density falls. Without the
-// cut-off the noise does not rectify. Bounds: area drift 1e-3 (measured 3e-5; 0.1 with the
-// cut-off), interior state 1e-2 (measured 2.7e-3; 0.155 with the cut-off).
+// The disk above without the tension cut-off: the settle's routing keeps it at round-off to step
+// 431, then a deviation appears, its leftovers stop balancing, the routing stops, and the
+// start-of-step apertures' mismatch (~4e-3 of a cell per step, opposite on the front and back
+// halves) stays as density noise (docs/tvd.md, "Uniform motion", "Not covered"). Without the
+// cut-off that noise does not rectify: the lines' area stays (with the cut-off and no routing it
+// grew by 10 %). Bounds: area drift 1e-3 (measured 7e-5), interior state 1e-2 (measured 2.8e-3).
 TEST(TvdCutCells, DiskWithoutTensionCutoffKeepsItsArea) {
   const double h = 0.05, R = 0.25, u = 0.5;
   cases::Scene s = cutScene(-0.6, 10.8, -0.6, 0.6, h);
