@@ -74,6 +74,10 @@ struct Phases {
   //! First part of repair for phase p: material the sweeps carried ahead of the marker lines
   //! goes to the neighbouring cells the lines give it (working fraction `volume` against alpha).
   void settle(const CellVolumes& volumes, int p);
+  //! Second part of settle: a deficit the two rings could not fill takes from the nearest
+  //! cells with an excess along a path of face neighbours holding the phase, each hop moving the
+  //! volume at its own cell's state (docs/tvd.md, "Uniform motion").
+  void route(const CellVolumes& volumes, int p);
   //! Mixture state: the sum of the phases' q (rows [rowLo, rowHi); U is zero outside);
   //! without `energy`, U.E is left as it is.
   void mixture(Conserved& U, bool energy = true) const;
@@ -81,6 +85,10 @@ struct Phases {
  private:
   std::vector<unsigned char> mask_;  // repair scratch: cells to visit
   std::vector<long> todo_;
+  std::vector<unsigned> stamp_;  // route scratch: BFS visit stamps and parents per cell
+  std::vector<long> parent_, queue_;
+  std::vector<int> depth_;
+  unsigned epoch_ = 0;
 };
 
 }  // namespace hvi::tvd
