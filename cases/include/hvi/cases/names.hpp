@@ -20,6 +20,7 @@ std::span<const std::string_view> limiterNames();   //!< minmod, van_leer, super
 std::span<const std::string_view> interfaceNames(); //!< whole_cell, conservative
 std::span<const std::string_view> energyFormNames(); //!< compatible, symmetric
 std::span<const std::string_view> rzFormNames();     //!< auto, ring, symmetric
+std::span<const std::string_view> viscositySwitchNames();  //!< off, morris_monaghan
 
 std::string_view toString(SolverKind s);
 std::string_view toString(Boundary b);
@@ -29,5 +30,6 @@ std::string_view toString(Limiter l);
 std::string_view toString(InterfaceMode m);
 std::string_view toString(EnergyForm f);
 std::string_view toString(RzForm f);
+std::string_view toString(ViscositySwitch v);
 
 }  // namespace hvi::cases

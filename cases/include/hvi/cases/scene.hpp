@@ -112,6 +112,10 @@ enum class EnergyForm { Compatible, Symmetric };
 //! stress terms exist for the ring form only).
 enum class RzForm { Auto, Ring, Symmetric };
 
+//! A per-particle switch of the Monaghan viscosity (docs/strength.md, "Viscosity switch"): off
+//! (constant alpha, beta: the study's), or Morris and Monaghan's (1997) alpha_i.
+enum class ViscositySwitch { Off, MorrisMonaghan };
+
 struct SphParams {
   double spacing = 0.01;   //!< particle spacing dx, cm
   double hFactor = 1.0;    //!< h = hFactor * spacing
@@ -129,6 +133,11 @@ struct SphParams {
   //! rho^2 of the tensile principal stresses, weighted per pair by (W(r) / W(dp))^exponent.
   double artificialStressEpsilon = 0.3;
   int artificialStressExponent = 4;
+  //! Viscosity switch (with strength only, docs/strength.md): alpha_i in [alphaMin, alpha],
+  //! beta_i = beta alpha_i / alpha, decay time h / (switchDecay c).
+  ViscositySwitch viscositySwitch = ViscositySwitch::Off;
+  double alphaMin = 0.1;
+  double switchDecay = 0.2;
 };
 
 enum class Limiter { Minmod, VanLeer, Superbee };

@@ -38,6 +38,13 @@ struct StepperConfig {
   //! f_ab^n (Gray, Monaghan and Swift 2001: 0.3 and 4); epsilon = 0 switches it off.
   double artificialStress = 0.3;
   int artificialStressPower = 4;
+  //! Morris and Monaghan's (1997) viscosity switch (with strength and viscosity only;
+  //! docs/strength.md, "Viscosity switch"): per-particle alpha_i in [alphaMin, visc.alpha],
+  //! the pair's alpha the mean, beta scaled alike; decay time h / (switchDecay c). The force
+  //! passes then run inviscid and the strength pass adds the switched viscosity.
+  bool viscositySwitch = false;
+  double alphaMin = 0.1;
+  double switchDecay = 0.2;
 };
 
 //! The strength state of the real particles (empty vectors without the effect).
@@ -46,6 +53,7 @@ struct StrengthFields {
   std::vector<double> plasticStrain;       //!< equivalent plastic strain
   std::vector<double> damage;              //!< D in [0, 1]
   std::vector<double> temperature;         //!< K (docs/strength.md, Temperature); 0 for fluids
+  std::vector<double> viscosityAlpha;      //!< alpha_i of the viscosity switch (empty without)
 };
 
 //! Advances a particle system with the scheme of docs/sph.md:
