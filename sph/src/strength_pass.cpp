@@ -15,13 +15,19 @@
 namespace hvi::sph::detail {
 namespace {
 
-// The viscosity switch's inputs and output (docs/strength.md, "Viscosity switch").
+// The viscosity switch's inputs and output (docs/strength.md, "SPH viscosity switch").
 struct SwitchArgs {
   const double* alpha;  // alpha_i of every point (p.alpha)
   double betaPerAlpha;  // beta_ij = betaPerAlpha alpha_ij
   double* divv;         // div v of the reals (written)
 };
 
+// A row's pair sums: the velocity gradient, the stress force and power, the hoop part (r-z)
+// and the most negative phi_ij of the switched viscosity.
+struct RowSums {
+  double gxx = 0.0, gxz = 0.0, gzx = 0.0, gzz = 0.0;
+  double ax = 0.0, az = 0.0, de = 0.0, hoop = 0.0, phiMin = 0.0;
+};
 
 // Each particle gathers over its own list, as the force pass does (fixed summation order, no
 // atomics). The velocity gradient, the stress force and the stress power all sum over every
@@ -30,15 +36,109 @@ struct SwitchArgs {
 // continuity rate, was tried: at a contact next to the r-z axis it let the interface particles
 // run away, v_z 40 v0 at 1 us in SphStrength.ElasticWaveTravelsAtLongitudinalSpeedInRz.)
 //
+// With `Switch` the Monaghan viscosity of the pair, with alpha_ij = (alpha_i + alpha_j) / 2,
+// enters T_ab as -r_ab Pi_ab I: the force -mu_b r_ab Pi grad W and the power
+// (1/2) mu_b r_ab Pi v_ab . grad W of pair_force.hpp's viscous part (its compatible share is
+// the even 1/2 of the stress terms).
+template <class K, bool RZ, bool Cached, bool Pairs, bool Switch>
+RowSums scalarRow(const PairArrays& a, std::size_t i, const int* nb, const double* wc, int cnt,
+                  const StressPoints& p, double q2dp, int power, const SwitchArgs& sw,
+                  double* pwx, double* pwz) {
+  const double xi = a.x[i], zi = a.z[i], vxi = a.vx[i], vzi = a.vz[i], hi = a.h[i];
+  const Sym2 ti{p.txx[i], p.tzz[i], p.txz[i]}, ri{p.rxx[i], p.rzz[i], p.rxz[i]};
+  const double ih2i = 1.0 / (hi * hi);
+  const double wdpi = K::value(q2dp * hi * hi, hi, ih2i);
+  RowSums r;
+  for (int k = 0; k < cnt; ++k) {
+    const std::size_t j = static_cast<std::size_t>(nb[k]);
+    const double hj = a.h[j];
+    double ih2 = ih2i, hij = hi, wdp = wdpi;
+    if (hj != hi) {
+      hij = 0.5 * (hi + hj);
+      ih2 = 1.0 / (hij * hij);
+      wdp = K::value(q2dp * hij * hij, hij, ih2);
+    }
+    const double dx = xi - a.x[j], dz = zi - a.z[j];
+    const double r2 = dx * dx + dz * dz;
+    double w;
+    if (Cached && wc) {
+      w = wc[k];
+    } else {
+      w = K::value(r2, hij, ih2);
+    }
+    if (w == 0.0) continue;
+    const double f = K::gradFactor(w, r2, hij, ih2);
+    const double gx = f * dx, gz = f * dz;  // grad_i W_ij
+    const double dvx = vxi - a.vx[j], dvz = vzi - a.vz[j];
+    const VelocityGradientTerm t = velocityGradientTerm(p.vol[j], -dvx, -dvz, gx, gz);
+    r.gxx += t.xx;
+    r.gxz += t.xz;
+    r.gzx += t.zx;
+    r.gzz += t.zz;
+    Sym2 tab{ti.xx + p.txx[j], ti.zz + p.tzz[j], ti.xz + p.txz[j]};
+    if (power > 0) {
+      const double fab = w / wdp;
+      double fn = fab;
+      for (int e = 1; e < power; ++e) fn *= fab;
+      tab.xx += fn * (ri.xx + p.rxx[j]);
+      tab.zz += fn * (ri.zz + p.rzz[j]);
+      tab.xz += fn * (ri.xz + p.rxz[j]);
+    }
+    if constexpr (Switch) {
+      const double aij = 0.5 * (sw.alpha[i] + sw.alpha[j]);
+      const MonaghanViscosity visc{aij, sw.betaPerAlpha * aij};
+      double phi = 0.0;
+      const double pi = visc(dvx * dx + dvz * dz, r2, hij, 0.5 * (a.c[i] + a.c[j]),
+                             0.5 * (a.rho[i] + a.rho[j]), phi);
+      const double rpi = RZ ? 0.5 * (a.rw[i] + a.rw[j]) * pi : pi;
+      tab.xx -= rpi;
+      tab.zz -= rpi;
+      r.phiMin = std::min(r.phiMin, phi);
+    }
+    if constexpr (RZ) r.hoop += a.mu[j] * p.htt[j] * w;
+    const StressPairTerm st = stressPairTerm(tab, a.mu[j], dvx, dvz, gx, gz);
+    r.ax += st.ax;
+    r.az += st.az;
+    r.de += st.de;
+    if constexpr (Pairs) {
+      // The compatible energy's remainder needs each pair acceleration times i's share of
+      // the pair's work; the stress power is split evenly (stressPairTerm), share 1/2.
+      pwx[k] += 0.5 * st.ax;
+      pwz[k] += 0.5 * st.az;
+    }
+  }
+  return r;
+}
+
+// The same sums from the lane kernel's per-pair terms (stress_lanes.hpp), added in list order
+// as scalarRow adds them: the same bits (a pair with W = 0 adds zeros).
+template <bool RZ, bool Pairs, bool Switch>
+RowSums laneRow(const StressRowTerms& t, int cnt, double* pwx, double* pwz) {
+  RowSums r;
+  for (int k = 0; k < cnt; ++k) {
+    r.gxx += t.gxx[k];
+    r.gxz += t.gxz[k];
+    r.gzx += t.gzx[k];
+    r.gzz += t.gzz[k];
+    if constexpr (Switch) r.phiMin = std::min(r.phiMin, t.phi[k]);
+    if constexpr (RZ) r.hoop += t.hoop[k];
+    r.ax += t.ax[k];
+    r.az += t.az[k];
+    r.de += t.de[k];
+    if constexpr (Pairs) {
+      pwx[k] += 0.5 * t.ax[k];
+      pwz[k] += 0.5 * t.az[k];
+    }
+  }
+  return r;
+}
+
 // r-z (docs/strength.md, "SPH with strength"): the in-plane tensor is weighted by the radius as
 // the pressure is (T = r s / rho^2), the pair sums are divided by r_i, and the hoop stress enters
 // as the pressure's hoop term does, H_i += sum_k mu_k (-r_k s_tt,k / rho_k^2) W_ik (k = i
 // included, times the axis correction), with a_r += H_i / r_i^2 and de += lam_i H_i / r_i (they
 // cancel particle by particle in the energy, as for the pressure).
-// With `Switch` the Monaghan viscosity of the pair, with alpha_ij = (alpha_i + alpha_j) / 2,
-// enters T_ab as -r_ab Pi_ab I: the force -mu_b r_ab Pi grad W and the power
-// (1/2) mu_b r_ab Pi v_ab . grad W of pair_force.hpp's viscous part (its compatible share is
-// the even 1/2 of the stress terms).
+// `lanes`: the Gaussian lane kernel (null: the scalar loop).
 template <class K, bool RZ, bool Cached, bool Pairs, bool Switch>
 void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
                  const StressPoints& p, const double* sxx, const double* szz, const double* sxz,
@@ -47,148 +147,76 @@ void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& li
                  StressRowKernel lanes) {
   const long nr = static_cast<long>(nReal);
   const double q2dp = 1.0 / (hFactor * hFactor);  // (dp / h)^2
-  const StressLaneArrays la{a.x.data(),    a.z.data(),    a.vx.data(),   a.vz.data(),
-                            a.h.data(),    a.mu.data(),   a.rho.data(),  a.c.data(),
-                            a.rw.data(),   p.txx.data(),  p.tzz.data(),  p.txz.data(),
-                            p.rxx.data(),  p.rzz.data(),  p.rxz.data(),  p.htt.data(),
-                            sw.alpha,      p.vol.data(),  p.rec.data()};
+  const StressLaneArrays la{a.x.data(),   a.z.data(),   a.vx.data(),  a.vz.data(),  a.h.data(),
+                            a.mu.data(),  a.rho.data(), a.c.data(),   a.rw.data(),  p.txx.data(),
+                            p.tzz.data(), p.txz.data(), p.rxx.data(), p.rzz.data(), p.rxz.data(),
+                            p.htt.data(), sw.alpha,     p.vol.data(), p.rec.data()};
   const StressRowParams prm{q2dp, power, sw.betaPerAlpha};
   const std::size_t cap = lanes ? (list.stride + 7) / 8 * 8 : 0;  // whole blocks of 8 lanes
 #pragma omp parallel if (nr > kParallelPairs)
   {
-  // One scratch row per thread and pass (no allocation per pair).
-  std::vector<double> scratch(9 * cap);
-  double* s0 = scratch.data();
-  const StressRowTerms terms{s0,           s0 + cap,     s0 + 2 * cap, s0 + 3 * cap, s0 + 4 * cap,
-                             s0 + 5 * cap, s0 + 6 * cap, s0 + 7 * cap, s0 + 8 * cap};
+    // One scratch row per thread and pass (no allocation per pair).
+    std::vector<double> scratch(9 * cap);
+    double* s0 = scratch.data();
+    const StressRowTerms terms{s0,           s0 + cap,     s0 + 2 * cap,
+                               s0 + 3 * cap, s0 + 4 * cap, s0 + 5 * cap,
+                               s0 + 6 * cap, s0 + 7 * cap, s0 + 8 * cap};
 #pragma omp for schedule(static)
-  for (long il = 0; il < nr; ++il) {
-    const std::size_t i = static_cast<std::size_t>(il);
-    const double xi = a.x[i], zi = a.z[i], vxi = a.vx[i], vzi = a.vz[i], hi = a.h[i];
-    const Sym2 ti{p.txx[i], p.tzz[i], p.txz[i]}, ri{p.rxx[i], p.rzz[i], p.rxz[i]};
-    const int* nb = list.index.data() + list.start[i];
-    // The state-n pass runs at the list's positions: cached W if the list has them, else the
-    // same W recomputed.
-    const double* wc = Cached && list.cacheW ? list.w.data() + list.start[i] : nullptr;
-    const int cnt = list.count[i];
-    double* pwx = Pairs ? out.pairWx + list.start[i] : nullptr;
-    double* pwz = Pairs ? out.pairWz + list.start[i] : nullptr;
-    double gxx = 0.0, gxz = 0.0, gzx = 0.0, gzz = 0.0;
-    double sax = 0.0, saz = 0.0, sde = 0.0, shoop = 0.0, phiMin = 0.0;
-    if (lanes) {
-      // The lane kernel's per-pair terms (stress_lanes.hpp), added in list order as the loop
-      // below adds them: the same bits (a pair with W = 0 adds zeros).
-      lanes(la, i, nb, wc, cnt, prm, terms);
-      for (int k = 0; k < cnt; ++k) {
-        gxx += terms.gxx[k];
-        gxz += terms.gxz[k];
-        gzx += terms.gzx[k];
-        gzz += terms.gzz[k];
-        if constexpr (Switch) phiMin = std::min(phiMin, terms.phi[k]);
-        if constexpr (RZ) shoop += terms.hoop[k];
-        sax += terms.ax[k];
-        saz += terms.az[k];
-        sde += terms.de[k];
-        if constexpr (Pairs) {
-          pwx[k] += 0.5 * terms.ax[k];
-          pwz[k] += 0.5 * terms.az[k];
-        }
-      }
-    } else {
-    const double ih2i = 1.0 / (hi * hi);
-    const double wdpi = K::value(q2dp * hi * hi, hi, ih2i);
-    for (int k = 0; k < cnt; ++k) {
-      const std::size_t j = static_cast<std::size_t>(nb[k]);
-      const double hj = a.h[j];
-      double ih2 = ih2i, hij = hi, wdp = wdpi;
-      if (hj != hi) {
-        hij = 0.5 * (hi + hj);
-        ih2 = 1.0 / (hij * hij);
-        wdp = K::value(q2dp * hij * hij, hij, ih2);
-      }
-      const double dx = xi - a.x[j], dz = zi - a.z[j];
-      const double r2 = dx * dx + dz * dz;
-      double w;
-      if (Cached && wc) {
-        w = wc[k];
+    for (long il = 0; il < nr; ++il) {
+      const std::size_t i = static_cast<std::size_t>(il);
+      const int* nb = list.index.data() + list.start[i];
+      // The state-n pass runs at the list's positions: cached W if the list has them, else the
+      // same W recomputed.
+      const double* wc = Cached && list.cacheW ? list.w.data() + list.start[i] : nullptr;
+      const int cnt = list.count[i];
+      double* pwx = Pairs ? out.pairWx + list.start[i] : nullptr;
+      double* pwz = Pairs ? out.pairWz + list.start[i] : nullptr;
+      RowSums sums;
+      if (lanes) {
+        lanes(la, i, nb, wc, cnt, prm, terms);
+        sums = laneRow<RZ, Pairs, Switch>(terms, cnt, pwx, pwz);
       } else {
-        w = K::value(r2, hij, ih2);
+        sums = scalarRow<K, RZ, Cached, Pairs, Switch>(a, i, nb, wc, cnt, p, q2dp, power, sw, pwx,
+                                                      pwz);
       }
-      if (w == 0.0) continue;
-      const double f = K::gradFactor(w, r2, hij, ih2);
-      const double gx = f * dx, gz = f * dz;  // grad_i W_ij
-      const double dvx = vxi - a.vx[j], dvz = vzi - a.vz[j];
-      const VelocityGradientTerm t = velocityGradientTerm(p.vol[j], -dvx, -dvz, gx, gz);
-      gxx += t.xx;
-      gxz += t.xz;
-      gzx += t.zx;
-      gzz += t.zz;
-      Sym2 tab{ti.xx + p.txx[j], ti.zz + p.tzz[j], ti.xz + p.txz[j]};
-      if (power > 0) {
-        const double fab = w / wdp;
-        double fn = fab;
-        for (int e = 1; e < power; ++e) fn *= fab;
-        tab.xx += fn * (ri.xx + p.rxx[j]);
-        tab.zz += fn * (ri.zz + p.rzz[j]);
-        tab.xz += fn * (ri.xz + p.rxz[j]);
+      const double xi = a.x[i], hi = a.h[i];
+      const double gxx = sums.gxx, gxz = sums.gxz, gzx = sums.gzx, gzz = sums.gzz;
+      const double sax = sums.ax, saz = sums.az, sde = sums.de, shoop = sums.hoop;
+      const double phiMin = sums.phiMin;
+      double hoopRate = 0.0;
+      if constexpr (RZ) {
+        const double hoop =
+            (shoop + a.mu[i] * p.htt[i] * K::value(0.0, hi)) * (*axis)(a.rw[i], hi);
+        const double inv = 1.0 / a.rw[i];
+        const double sgn = xi >= 0.0 ? 1.0 : -1.0;  // a particle briefly past the axis
+        const double hoopAx = sgn * hoop * inv * inv;
+        out.ax[i] += sax * inv + hoopAx;
+        out.az[i] += saz * inv;
+        out.de[i] += sde * inv + a.lam[i] * hoop * inv;
+        if constexpr (Pairs) {
+          if (out.hoopAx) out.hoopAx[i] += hoopAx;
+        }
+        hoopRate = -a.lam[i];  // v_r / r
+      } else {
+        (void)axis;
+        out.ax[i] += sax;
+        out.az[i] += saz;
+        out.de[i] += sde;
       }
+      const strength::VelocityGradient grad{gxx, gxz, gzx, gzz, hoopRate};
+      const strength::Deviator s{sxx[i], szz[i], sxz[i]};
+      const strength::Deviator ds = strength::jaumannRate(s, grad, g[i]);
+      rs.dsxx[i] = ds.xx;
+      rs.dszz[i] = ds.zz;
+      rs.dsxz[i] = ds.xz;
+      rs.strainRate[i] = strength::equivalentStrainRate(grad);
       if constexpr (Switch) {
-        const double aij = 0.5 * (sw.alpha[i] + sw.alpha[j]);
-        const MonaghanViscosity visc{aij, sw.betaPerAlpha * aij};
-        double phi = 0.0;
-        const double pi = visc(dvx * dx + dvz * dz, r2, hij, 0.5 * (a.c[i] + a.c[j]),
-                               0.5 * (a.rho[i] + a.rho[j]), phi);
-        const double rpi = RZ ? 0.5 * (a.rw[i] + a.rw[j]) * pi : pi;
-        tab.xx -= rpi;
-        tab.zz -= rpi;
-        phiMin = std::min(phiMin, phi);
-      }
-      if constexpr (RZ) shoop += a.mu[j] * p.htt[j] * w;
-      const StressPairTerm st = stressPairTerm(tab, a.mu[j], dvx, dvz, gx, gz);
-      sax += st.ax;
-      saz += st.az;
-      sde += st.de;
-      if constexpr (Pairs) {
-        // The compatible energy's remainder needs each pair acceleration times i's share of
-        // the pair's work; the stress power is split evenly (stressPairTerm), share 1/2.
-        pwx[k] += 0.5 * st.ax;
-        pwz[k] += 0.5 * st.az;
+        sw.divv[i] = gxx + gzz + hoopRate;
+        if constexpr (Cached) out.phi[i] = std::min(out.phi[i], phiMin);  // the time step's phi
+      } else {
+        (void)phiMin;
       }
     }
-    }
-    double hoopRate = 0.0;
-    if constexpr (RZ) {
-      const double hoop = (shoop + a.mu[i] * p.htt[i] * K::value(0.0, hi)) * (*axis)(a.rw[i], hi);
-      const double inv = 1.0 / a.rw[i];
-      const double sgn = xi >= 0.0 ? 1.0 : -1.0;  // a particle briefly past the axis
-      const double hoopAx = sgn * hoop * inv * inv;
-      out.ax[i] += sax * inv + hoopAx;
-      out.az[i] += saz * inv;
-      out.de[i] += sde * inv + a.lam[i] * hoop * inv;
-      if constexpr (Pairs) {
-        if (out.hoopAx) out.hoopAx[i] += hoopAx;
-      }
-      hoopRate = -a.lam[i];  // v_r / r
-    } else {
-      (void)axis;
-      out.ax[i] += sax;
-      out.az[i] += saz;
-      out.de[i] += sde;
-    }
-    const strength::VelocityGradient grad{gxx, gxz, gzx, gzz, hoopRate};
-    const strength::Deviator s{sxx[i], szz[i], sxz[i]};
-    const strength::Deviator ds = strength::jaumannRate(s, grad, g[i]);
-    rs.dsxx[i] = ds.xx;
-    rs.dszz[i] = ds.zz;
-    rs.dsxz[i] = ds.xz;
-    rs.strainRate[i] = strength::equivalentStrainRate(grad);
-    if constexpr (Switch) {
-      sw.divv[i] = gxx + gzz + hoopRate;
-      if constexpr (Cached) out.phi[i] = std::min(out.phi[i], phiMin);  // the time step's phi
-    } else {
-      (void)phiMin;
-    }
-  }
   }
 }
 
@@ -339,7 +367,8 @@ void StrengthModel::advance(double dt, std::size_t n, const PairArrays& a, const
     for (long il = 0; il < nl; ++il) {
       const std::size_t i = static_cast<std::size_t>(il);
       const double ai = alpha[i];
-      const double rate = std::max(-divv_[i], 0.0) * (amax - ai) - (ai - amin) * decay_ * a.c[i] / a.h[i];
+      const double rate =
+          std::max(-divv_[i], 0.0) * (amax - ai) - (ai - amin) * decay_ * a.c[i] / a.h[i];
       alpha[i] = std::clamp(ai + dt * rate, amin, amax);
     }
   }

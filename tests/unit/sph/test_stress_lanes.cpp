@@ -119,7 +119,10 @@ Ref reference(const Points& p, std::size_t i, std::size_t j, const StressRowPara
   return r;
 }
 
-bool same(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0 || (a == 0.0 && b == 0.0); }
+// Equal bits, or both zero: a masked lane stores +0 where the loop skips (sums unchanged).
+bool same(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0 || (a == 0.0 && b == 0.0);
+}
 
 void checkKernel(StressRowKernel (*make)(bool, bool)) {
   const Points p = randomPoints(200, 7);

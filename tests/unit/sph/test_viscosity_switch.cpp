@@ -102,7 +102,8 @@ TEST(SphViscositySwitch, RisesInTheShockAndConservesEnergy) {
     // the shock halfway through the plate: its particles at z < -0.05 still at rest
     double vmid = 0.0;
     for (std::size_t i = 0; i < ps.size(); ++i)
-      if (std::abs(ps.z[i] + 0.05) < 0.011 && std::abs(ps.x[i]) < 0.05) vmid = std::min(vmid, ps.vz[i]);
+      if (std::abs(ps.z[i] + 0.05) < 0.011 && std::abs(ps.x[i]) < 0.05)
+        vmid = std::min(vmid, ps.vz[i]);
     if (vmid > -0.05) continue;
     seen = true;
     const StrengthFields f = solver.stepper().strengthFields();
