@@ -21,7 +21,7 @@ constexpr std::array<KeyRow<Scene>, 2> kTime{{
      .docValue = "**required**, time > start", .required = true},
 }};
 
-constexpr std::array<KeyRow<SphParams>, 17> kSph{{
+constexpr std::array<KeyRow<SphParams>, 18> kSph{{
     {.key = "spacing", .kind = K::Quantity, HVI_KEY_FIELD(SphParams, spacing),
      .ok = [](double v) { return v > 0.0; }, .problem = "must be > 0", .allowed = "a length > 0",
      .docValue = "length > 0, particle spacing dx", .docDefault = "`0.01 cm`"},
@@ -105,6 +105,13 @@ constexpr std::array<KeyRow<SphParams>, 17> kSph{{
      .ok = [](double v) { return v > 0.0 && v <= 1.0; }, .problem = "must be in (0, 1]",
      .allowed = "0 < switch_decay <= 1",
      .docValue = "(0, 1], l of the switch's decay time h / (l c)", .docDefault = "0.2"},
+    // docs/strength.md, "SPH viscosity switch": the kernel gradient's total rate carries the
+    // particles' jitter and ringing into the Johnson-Cook rate factor.
+    {.key = "yield_strain_rate", .kind = K::Choice, HVI_KEY_FIELD(SphParams, yieldStrainRate),
+     .choices = yieldStrainRateNames,
+     .docValue = "`\"total\"` (the velocity gradient's), `\"plastic\"` (the last step's plastic "
+                 "strain rate), with strength",
+     .docDefault = "`\"total\"`"},
 }};
 
 constexpr std::array<KeyRow<TvdParams>, 6> kTvd{{

@@ -213,6 +213,12 @@ void checkStrength(const TableReader& root, const Scene& scene) {
 // The SPH viscosity switch (docs/strength.md, "Viscosity switch") is summed by the strength
 // pass: with the effects strength and artificial_viscosity only; alpha is its maximum.
 void checkViscositySwitch(const TableReader& root, const Scene& scene) {
+  if (scene.sph.yieldStrainRate == YieldStrainRate::Plastic &&
+      (scene.solver != SolverKind::Sph || !scene.has(Effect::Strength)))
+    root.subTable("sph", true)
+        ->fail("yield_strain_rate",
+               "\"plastic\" is the SPH yield law's strain rate with the effect \"strength\"",
+               "\"total\", or solver = \"sph\" with effects = [..., \"strength\"]");
   if (scene.sph.viscositySwitch == ViscositySwitch::Off) return;
   const auto sph = root.subTable("sph", true);
   if (scene.solver != SolverKind::Sph || !scene.has(Effect::Strength) ||

@@ -91,6 +91,7 @@ StepperConfig stepperConfig(const cases::Scene& scene) {
     cfg.artificialStress = scene.sph.artificialStressEpsilon;
     cfg.artificialStressPower = scene.sph.artificialStressExponent;
     cfg.fracture = scene.has(cases::Effect::Fracture);
+    cfg.plasticStrainRate = scene.sph.yieldStrainRate == cases::YieldStrainRate::Plastic;
     if (scene.sph.viscositySwitch == cases::ViscositySwitch::MorrisMonaghan) {
       cfg.viscositySwitch = true;
       cfg.alphaMin = scene.sph.alphaMin;

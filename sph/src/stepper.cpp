@@ -65,6 +65,7 @@ Stepper::Impl::Impl(ParticleSystem ps, std::vector<eos::Eos> mats, StepperConfig
                                                        cfg.artificialStressPower, cfg.fracture);
     strength->resize(n);
     if (switched) strength->enableViscositySwitch(cfg.visc, cfg.alphaMin, cfg.switchDecay, n);
+    if (cfg.plasticStrainRate) strength->enablePlasticStrainRate(n);
   }
   const char* store = std::getenv("HVI_SPH_STORE_PAIRS");
   storePairs = compatible && (strength || (store && std::atoi(store) != 0));
@@ -410,6 +411,7 @@ StrengthFields Stepper::strengthFields() const {
   copy(f.plasticStrain, s.strength->epsP);
   copy(f.damage, s.strength->damage);
   if (s.strength->viscositySwitch()) copy(f.viscosityAlpha, s.strength->alpha);
+  if (s.strength->plasticStrainRate()) copy(f.plasticStrainRate, s.strength->plasticRate);
   f.stt.resize(s.n);
   f.temperature.resize(s.n);
   for (std::size_t i = 0; i < s.n; ++i) {

@@ -332,6 +332,7 @@ void StrengthModel::resize(std::size_t n) {
     alpha.resize(n, visc_.alpha);
     divv_.resize(n, 0.0);
   }
+  if (plasticRateOn_) plasticRate.resize(n, 0.0);
 }
 
 void StrengthModel::compact(const std::vector<unsigned char>& keep, std::size_t n0, std::size_t n) {
@@ -340,10 +341,11 @@ void StrengthModel::compact(const std::vector<unsigned char>& keep, std::size_t 
     for (std::size_t i = 0; i < n0; ++i)
       if (keep[i]) v[k++] = v[i];
   });
-  if (switch_) {
+  for (auto* v : {&alpha, &plasticRate}) {
+    if (v->empty()) continue;  // without the switch / the plastic rate
     std::size_t k = 0;
     for (std::size_t i = 0; i < n0; ++i)
-      if (keep[i]) alpha[k++] = alpha[i];
+      if (keep[i]) (*v)[k++] = (*v)[i];
   }
   resize(n);
 }
@@ -391,7 +393,8 @@ void StrengthModel::advance(double dt, std::size_t n, const PairArrays& a, const
             strength::Deviator s{sxx0_[i] + dt * dsxx_[i], szz0_[i] + dt * dszz_[i],
                                  sxz0_[i] + dt * dsxz_[i]};
             const double eta = a.rho[i] / rho0;
-            const strength::YieldInput in{epsP[i], rate_[i], a.p[i],
+            const double rate = plasticRateOn_ ? plasticRate[i] : rate_[i];
+            const strength::YieldInput in{epsP[i], rate, a.p[i],
                                           sm.thermal.temperature(eta, e[i]), eta};
             // Damaged material keeps (1 - D) of its shear strength (docs/strength.md).
             const double d = damage[i];
@@ -401,6 +404,7 @@ void StrengthModel::advance(double dt, std::size_t n, const PairArrays& a, const
             szz[i] = s.zz;
             sxz[i] = s.xz;
             if (!accumulate) continue;
+            if (plasticRateOn_) plasticRate[i] = rr.plasticStrain / dt;
             epsP[i] += rr.plasticStrain;
             if (fracture_ && d < 1.0)
               damage[i] = growDamage(sm, law, d, dt, a.p[i], a.rho[i], a.c[i], g_[i], cL[i],
@@ -498,6 +502,11 @@ void StrengthModel::pass(const PairArrays& a, std::size_t n, const NeighbourList
     dispatch<CubicSplineKernel>(rz, switch_, cached, pairs, a, n, list, pts_, sxx.data(),
                                 szz.data(), sxz.data(), g_.data(), hFactor_, power_, axis, out, rs,
                                 sw);
+}
+
+void StrengthModel::enablePlasticStrainRate(std::size_t n) {
+  plasticRateOn_ = true;
+  plasticRate.assign(n, 0.0);
 }
 
 void StrengthModel::enableViscositySwitch(const MonaghanViscosity& visc, double alphaMin,

@@ -94,6 +94,13 @@ class StrengthModel {
   [[nodiscard]] bool viscositySwitch() const { return switch_; }
   std::vector<double> alpha;  //!< alpha_i of the reals (checkpointed with the switch only)
 
+  //! The yield law's strain rate becomes each particle's equivalent plastic strain rate of its
+  //! last step, d eps_p / dt (0 at the start; checkpointed), instead of the velocity
+  //! gradient's total equivalent rate (docs/strength.md, "SPH viscosity switch").
+  void enablePlasticStrainRate(std::size_t n);
+  [[nodiscard]] bool plasticStrainRate() const { return plasticRateOn_; }
+  std::vector<double> plasticRate;  //!< 1/us, of the reals
+
   //! Temperature of real particle i (snapshots), K.
   [[nodiscard]] double temperature(const PairArrays& a, const double* e, int mat,
                                    std::size_t i) const;
@@ -114,6 +121,7 @@ class StrengthModel {
   MonaghanViscosity visc_;      // alpha, beta: the switch's maximum
   double alphaMin_ = 0.0, decay_ = 0.0;
   std::vector<double> divv_;    // div v of the reals from the last pass (the switch's source)
+  bool plasticRateOn_ = false;
 };
 
 }  // namespace hvi::sph::detail

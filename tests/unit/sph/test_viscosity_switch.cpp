@@ -148,9 +148,11 @@ TEST(SphViscositySwitch, AtAlphaMinEqualAlphaIsTheConstantViscosity) {
   EXPECT_LT(dv, 1e-6 * 0.2);
 }
 
-// A restart continues bit for bit: alpha_i is part of the checkpoint with the switch.
+// A restart continues bit for bit: alpha_i (the switch) and the plastic strain rate
+// (yield_strain_rate "plastic") are part of the checkpoint.
 TEST(SphViscositySwitch, RestartIsBitForBit) {
-  const cases::Scene s = scene(0.0, 0.2, true);
+  cases::Scene s = scene(0.0, 0.2, true);
+  s.sph.yieldStrainRate = cases::YieldStrainRate::Plastic;
   SphSolver original(s);
   for (int k = 0; k < 15; ++k) original.advance(1e9);
   std::stringstream ckpt;
@@ -169,8 +171,52 @@ TEST(SphViscositySwitch, RestartIsBitForBit) {
   EXPECT_TRUE(sameBits(a.e, b.e));
   EXPECT_TRUE(sameBits(fa.sxx, fb.sxx));
   EXPECT_TRUE(sameBits(fa.viscosityAlpha, fb.viscosityAlpha));
+  EXPECT_TRUE(sameBits(fa.plasticStrainRate, fb.plasticStrainRate));
   const auto [lo, hi] = std::minmax_element(fa.viscosityAlpha.begin(), fa.viscosityAlpha.end());
   EXPECT_LT(*lo, *hi);  // alpha_i varies: the checkpoint carries a field, not a constant
+}
+
+// yield_strain_rate = "plastic": the yield law's rate is each particle's plastic strain rate of
+// its last step, d eps_p / dt: checked after every step against the plastic strain's change
+// (round-off of eps_p's sum: 1e-12 of the largest rate), 0 where the step was elastic, and
+// different results from the total rate's (the 6061-T6 preset is Steinberg-Guinan, whose
+// yield has no rate term: a Johnson-Cook copper block instead).
+TEST(SphPlasticStrainRate, IsTheLastStepsPlasticStrainOverDt) {
+  cases::Scene s = scene(-0.4, 0.2, false);
+  s.materials[0].strength = strength::findPreset("copper_ofhc")->material;
+  s.sph.yieldStrainRate = cases::YieldStrainRate::Plastic;
+  cases::Scene total = s;
+  total.sph.yieldStrainRate = cases::YieldStrainRate::Total;
+  SphSolver solver(s), reference(total);
+  double worst = 0.0, top = 0.0;
+  std::size_t elastic = 0, plastic = 0;
+  for (int k = 0; k < 40; ++k) {
+    const std::vector<double> eps0 = solver.stepper().strengthFields().plasticStrain;
+    const double t0 = solver.time();
+    solver.advance(1e9);
+    reference.advance(1e9);
+    const double dt = solver.time() - t0;
+    const StrengthFields f = solver.stepper().strengthFields();
+    ASSERT_EQ(f.plasticStrainRate.size(), eps0.size());
+    for (std::size_t i = 0; i < eps0.size(); ++i) {
+      const double expect = (f.plasticStrain[i] - eps0[i]) / dt;
+      worst = std::max(worst, std::abs(f.plasticStrainRate[i] - expect));
+      top = std::max(top, f.plasticStrainRate[i]);
+      if (k == 2) (f.plasticStrainRate[i] == 0.0 ? elastic : plastic) += 1;
+    }
+  }
+  const std::vector<double> a = solver.stepper().strengthFields().plasticStrain,
+                            b = reference.stepper().strengthFields().plasticStrain;
+  double differ = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) differ = std::max(differ, std::abs(a[i] - b[i]));
+  std::printf("max plastic rate %.3e /us, max |rate - d eps_p / dt| %.1e; %zu plastic, "
+              "%zu elastic at step 3; max |eps_p - eps_p(total rate)| %.2e\n",
+              top, worst, plastic, elastic, differ);
+  EXPECT_GT(top, 0.0);
+  EXPECT_LT(worst, 1e-12 * top);
+  EXPECT_GT(plastic, 0u);
+  EXPECT_GT(elastic, 0u);
+  EXPECT_GT(differ, 1e-6);
 }
 
 }  // namespace

@@ -115,6 +115,10 @@ enum class RzForm { Auto, Ring, Symmetric };
 //! A per-particle switch of the Monaghan viscosity (docs/strength.md, "Viscosity switch"): off
 //! (constant alpha, beta: the study's), or Morris and Monaghan's (1997) alpha_i.
 enum class ViscositySwitch { Off, MorrisMonaghan };
+//! The strain rate the SPH yield law sees (docs/strength.md, "SPH viscosity switch"): the
+//! kernel velocity gradient's total equivalent rate, or the particle's plastic strain rate of
+//! its last step.
+enum class YieldStrainRate { Total, Plastic };
 
 struct SphParams {
   double spacing = 0.01;   //!< particle spacing dx, cm
@@ -138,6 +142,7 @@ struct SphParams {
   ViscositySwitch viscositySwitch = ViscositySwitch::Off;
   double alphaMin = 0.1;
   double switchDecay = 0.2;
+  YieldStrainRate yieldStrainRate = YieldStrainRate::Total;  //!< with strength only
 };
 
 enum class Limiter { Minmod, VanLeer, Superbee };

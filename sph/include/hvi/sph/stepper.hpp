@@ -45,6 +45,9 @@ struct StepperConfig {
   bool viscositySwitch = false;
   double alphaMin = 0.1;
   double switchDecay = 0.2;
+  //! The yield law's strain rate: the last step's plastic strain rate (true) instead of the
+  //! velocity gradient's total equivalent rate (docs/strength.md, "SPH viscosity switch").
+  bool plasticStrainRate = false;
 };
 
 //! The strength state of the real particles (empty vectors without the effect).
@@ -54,6 +57,7 @@ struct StrengthFields {
   std::vector<double> damage;              //!< D in [0, 1]
   std::vector<double> temperature;         //!< K (docs/strength.md, Temperature); 0 for fluids
   std::vector<double> viscosityAlpha;      //!< alpha_i of the viscosity switch (empty without)
+  std::vector<double> plasticStrainRate;   //!< last step's, 1/us (yield_strain_rate "plastic")
 };
 
 //! Advances a particle system with the scheme of docs/sph.md:
