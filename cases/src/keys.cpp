@@ -21,7 +21,7 @@ constexpr std::array<KeyRow<Scene>, 2> kTime{{
      .docValue = "**required**, time > start", .required = true},
 }};
 
-constexpr std::array<KeyRow<SphParams>, 14> kSph{{
+constexpr std::array<KeyRow<SphParams>, 18> kSph{{
     {.key = "spacing", .kind = K::Quantity, HVI_KEY_FIELD(SphParams, spacing),
      .ok = [](double v) { return v > 0.0; }, .problem = "must be > 0", .allowed = "a length > 0",
      .docValue = "length > 0, particle spacing dx", .docDefault = "`0.01 cm`"},
@@ -89,6 +89,29 @@ constexpr std::array<KeyRow<SphParams>, 14> kSph{{
      .ok = [](double v) { return v >= 1 && v <= 12; }, .problem = "must be in [1, 12]",
      .allowed = "an integer in [1, 12]",
      .docValue = "integer in [1, 12], n of the pair weight (W(r) / W(dp))^n", .docDefault = "4"},
+    // docs/strength.md, "Viscosity switch": Morris and Monaghan (1997), with strength only (the
+    // strength pass sums the switched viscosity); "off" keeps the constant alpha, beta.
+    {.key = "viscosity_switch", .kind = K::Choice, HVI_KEY_FIELD(SphParams, viscositySwitch),
+     .choices = viscositySwitchNames,
+     .docValue = "`\"off\"`, `\"morris_monaghan\"` (per-particle alpha_i in [alpha_min, alpha], "
+                 "with strength)",
+     .docDefault = "`\"off\"`"},
+    {.key = "alpha_min", .kind = K::Number, HVI_KEY_FIELD(SphParams, alphaMin),
+     .ok = [](double v) { return v >= 0.0; }, .problem = "must be >= 0 (and <= sph.alpha)",
+     .allowed = "0 <= alpha_min <= alpha",
+     .docValue = ">= 0, <= alpha: the switch's floor alpha_i decays to", .docDefault = "0.1"},
+    // Morris and Monaghan: decay time h / (l c) with l = 0.1 to 0.2.
+    {.key = "switch_decay", .kind = K::Number, HVI_KEY_FIELD(SphParams, switchDecay),
+     .ok = [](double v) { return v > 0.0 && v <= 1.0; }, .problem = "must be in (0, 1]",
+     .allowed = "0 < switch_decay <= 1",
+     .docValue = "(0, 1], l of the switch's decay time h / (l c)", .docDefault = "0.2"},
+    // docs/strength.md, "SPH viscosity switch": the kernel gradient's total rate carries the
+    // particles' jitter and ringing into the Johnson-Cook rate factor.
+    {.key = "yield_strain_rate", .kind = K::Choice, HVI_KEY_FIELD(SphParams, yieldStrainRate),
+     .choices = yieldStrainRateNames,
+     .docValue = "`\"total\"` (the velocity gradient's), `\"plastic\"` (the last step's plastic "
+                 "strain rate), with strength",
+     .docDefault = "`\"total\"`"},
 }};
 
 constexpr std::array<KeyRow<TvdParams>, 6> kTvd{{

@@ -14,6 +14,8 @@ constexpr std::array<std::string_view, 3> kLimiters{"minmod", "van_leer", "super
 constexpr std::array<std::string_view, 2> kInterfaces{"whole_cell", "conservative"};
 constexpr std::array<std::string_view, 2> kEnergyForms{"compatible", "symmetric"};
 constexpr std::array<std::string_view, 3> kRzForms{"auto", "ring", "symmetric"};
+constexpr std::array<std::string_view, 2> kViscositySwitches{"off", "morris_monaghan"};
+constexpr std::array<std::string_view, 2> kYieldStrainRates{"total", "plastic"};
 
 template <class E, std::size_t N>
 std::string_view nameOf(const std::array<std::string_view, N>& names, E e) {
@@ -31,6 +33,8 @@ std::span<const std::string_view> limiterNames() { return kLimiters; }
 std::span<const std::string_view> interfaceNames() { return kInterfaces; }
 std::span<const std::string_view> energyFormNames() { return kEnergyForms; }
 std::span<const std::string_view> rzFormNames() { return kRzForms; }
+std::span<const std::string_view> viscositySwitchNames() { return kViscositySwitches; }
+std::span<const std::string_view> yieldStrainRateNames() { return kYieldStrainRates; }
 
 std::string_view toString(SolverKind s) { return nameOf(kSolvers, s); }
 std::string_view toString(Boundary b) { return nameOf(kBoundaries, b); }
@@ -40,5 +44,7 @@ std::string_view toString(Limiter l) { return nameOf(kLimiters, l); }
 std::string_view toString(InterfaceMode m) { return nameOf(kInterfaces, m); }
 std::string_view toString(EnergyForm f) { return nameOf(kEnergyForms, f); }
 std::string_view toString(RzForm f) { return nameOf(kRzForms, f); }
+std::string_view toString(ViscositySwitch v) { return nameOf(kViscositySwitches, v); }
+std::string_view toString(YieldStrainRate r) { return nameOf(kYieldStrainRates, r); }
 
 }  // namespace hvi::cases

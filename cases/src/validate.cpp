@@ -210,6 +210,34 @@ void checkStrength(const TableReader& root, const Scene& scene) {
               "\"strength\"");
 }
 
+// The SPH viscosity switch (docs/strength.md, "Viscosity switch") is summed by the strength
+// pass: with the effects strength and artificial_viscosity only; alpha is its maximum.
+void checkViscositySwitch(const TableReader& root, const Scene& scene) {
+  if (scene.sph.yieldStrainRate == YieldStrainRate::Plastic &&
+      (scene.solver != SolverKind::Sph || !scene.has(Effect::Strength)))
+    root.subTable("sph", true)
+        ->fail("yield_strain_rate",
+               "\"plastic\" is the SPH yield law's strain rate with the effect \"strength\"",
+               "\"total\", or solver = \"sph\" with effects = [..., \"strength\"]");
+  if (scene.sph.viscositySwitch == ViscositySwitch::Off) return;
+  const auto sph = root.subTable("sph", true);
+  if (scene.solver != SolverKind::Sph || !scene.has(Effect::Strength) ||
+      !scene.has(Effect::ArtificialViscosity))
+    sph->fail("viscosity_switch",
+              "\"morris_monaghan\" switches the SPH viscosity per particle with the effects "
+              "\"strength\" and \"artificial_viscosity\" (the strength pass sums it)",
+              "\"off\", or solver = \"sph\" with effects = [..., \"artificial_viscosity\", "
+              "\"strength\"]");
+  if (!(scene.sph.alpha > 0.0))
+    sph->fail("viscosity_switch", "needs sph.alpha > 0: alpha is the switch's maximum",
+              "sph.alpha > 0, or \"off\"");
+  if (scene.sph.alphaMin > scene.sph.alpha)
+    sph->fail("alpha_min",
+              "is " + g6(scene.sph.alphaMin) + ", above sph.alpha = " + g6(scene.sph.alpha) +
+                  " (the switch's maximum)",
+              "0 <= alpha_min <= alpha");
+}
+
 void checkRiemann(const TableReader& root, const Scene& scene, const Sources& src, double tol) {
   const std::string need = "planar geometry and exactly two rect bodies meeting at x = interface";
   if (scene.geometry != Geometry::Planar)
@@ -365,6 +393,7 @@ void validateScene(const TableReader& root, const Scene& scene, const Sources& s
   checkTimeResolution(root, scene);
   checkFeatures(root, scene);
   checkStrength(root, scene);
+  checkViscositySwitch(root, scene);
   if (scene.solver == SolverKind::Riemann) {
     checkRiemann(root, scene, src, tol);
     checkRiemannSolution(root, scene, src);

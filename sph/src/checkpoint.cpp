@@ -41,6 +41,10 @@ void Stepper::writeState(std::ostream& out) const {
   if (s.strength)
     detail::StrengthModel::forEachState(*s.strength,
                                         [&](const auto& v) { w.elements(v.data(), s.n); });
+  // With the viscosity switch its alpha_i follow (the scene says whether they are there).
+  if (s.strength && s.strength->viscositySwitch()) w.elements(s.strength->alpha.data(), s.n);
+  if (s.strength && s.strength->plasticStrainRate())
+    w.elements(s.strength->plasticRate.data(), s.n);
 }
 
 void Stepper::readState(std::istream& in) {
@@ -72,6 +76,8 @@ void Stepper::readState(std::istream& in) {
   if (s.strength) {
     s.strength->resize(n);
     detail::StrengthModel::forEachState(*s.strength, [&](auto& v) { r.elements(v, n); });
+    if (s.strength->viscositySwitch()) r.elements(s.strength->alpha, n);
+    if (s.strength->plasticStrainRate()) r.elements(s.strength->plasticRate, n);
   }
   for (int k : s.mat)
     if (k < 0 || k >= nmat) throw InputError("SPH checkpoint: material index out of range");

@@ -31,6 +31,20 @@ void validate(const cases::Scene& scene) {
     throw InputError(scene.path +
                      ": sph.rz_form = \"symmetric\" is not implemented with the effect strength "
                      "(docs/sph-rz.md); allowed with strength: \"auto\" or \"ring\"");
+  if (scene.sph.viscositySwitch != cases::ViscositySwitch::Off) {
+    // The switched viscosity is summed by the strength pass (docs/strength.md).
+    if (!scene.has(cases::Effect::Strength) || !scene.has(cases::Effect::ArtificialViscosity))
+      throw InputError(scene.path +
+                       ": sph.viscosity_switch = \"morris_monaghan\" needs the effects strength "
+                       "and artificial_viscosity; allowed without them: \"off\"");
+    if (!(scene.sph.alpha > 0.0))
+      throw InputError(fmt::format(
+          "{}: sph.viscosity_switch = \"morris_monaghan\" needs sph.alpha > 0 (its maximum; "
+          "got {})", scene.path, scene.sph.alpha));
+    if (!(scene.sph.alphaMin <= scene.sph.alpha))
+      throw InputError(fmt::format("{}: sph.alpha_min = {} must be <= sph.alpha = {}", scene.path,
+                                   scene.sph.alphaMin, scene.sph.alpha));
+  }
   if (!(scene.sph.alpha >= 0.0) || !(scene.sph.beta >= 0.0))
     throw InputError(fmt::format("{}: sph.alpha = {} and sph.beta = {} must be >= 0", scene.path,
                                  scene.sph.alpha, scene.sph.beta));
@@ -77,6 +91,12 @@ StepperConfig stepperConfig(const cases::Scene& scene) {
     cfg.artificialStress = scene.sph.artificialStressEpsilon;
     cfg.artificialStressPower = scene.sph.artificialStressExponent;
     cfg.fracture = scene.has(cases::Effect::Fracture);
+    cfg.plasticStrainRate = scene.sph.yieldStrainRate == cases::YieldStrainRate::Plastic;
+    if (scene.sph.viscositySwitch == cases::ViscositySwitch::MorrisMonaghan) {
+      cfg.viscositySwitch = true;
+      cfg.alphaMin = scene.sph.alphaMin;
+      cfg.switchDecay = scene.sph.switchDecay;
+    }
   }
   return cfg;
 }

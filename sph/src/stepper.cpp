@@ -31,11 +31,17 @@ Stepper::Impl::Impl(ParticleSystem ps, std::vector<eos::Eos> mats, StepperConfig
     axis = std::make_unique<detail::AxisCorrection>(cfg.kernel);
   }
   compatible = cfg.energy == cases::EnergyForm::Compatible;
-  passCached = detail::selectForcePass(cfg.kernel, rz, cfg.viscosity, compatible, true);
+  // With the viscosity switch the strength pass sums the (switched) viscosity: the force passes
+  // run inviscid (docs/strength.md, "Viscosity switch").
+  const bool switched = cfg.viscositySwitch && cfg.viscosity && !cfg.strength.empty();
+  if (switched && !(cfg.visc.alpha > 0.0))
+    throw InputError("SPH: the viscosity switch needs sph.alpha > 0 (its maximum)");
+  const bool viscous = cfg.viscosity && !switched;
+  passCached = detail::selectForcePass(cfg.kernel, rz, viscous, compatible, true);
   // (the symmetric r-z form runs the same pair kernels; only the drivers' r-z part differs)
-  passFresh = detail::selectForcePass(cfg.kernel, rz, cfg.viscosity, compatible, false);
+  passFresh = detail::selectForcePass(cfg.kernel, rz, viscous, compatible, false);
   passList = detail::selectListPass(cfg.kernel);
-  passRemainder = detail::selectRemainderPass(cfg.kernel, rz, cfg.viscosity);
+  passRemainder = detail::selectRemainderPass(cfg.kernel, rz, viscous);
   if (!(cfg.cfl > 0.0)) throw InputError(fmt::format("sph.cfl = {} must be > 0", cfg.cfl));
   // A particle moves at most (cfl/2) h_i in the half step (dt <= cfl h_i / |v_i|), so a pair
   // closes by at most cfl h_ij: a skin of cfl h_ij (plus a margin for rounding) keeps the
@@ -58,6 +64,8 @@ Stepper::Impl::Impl(ParticleSystem ps, std::vector<eos::Eos> mats, StepperConfig
                                                        cfg.hFactor, cfg.artificialStress,
                                                        cfg.artificialStressPower, cfg.fracture);
     strength->resize(n);
+    if (switched) strength->enableViscositySwitch(cfg.visc, cfg.alphaMin, cfg.switchDecay, n);
+    if (cfg.plasticStrainRate) strength->enablePlasticStrainRate(n);
   }
   const char* store = std::getenv("HVI_SPH_STORE_PAIRS");
   storePairs = compatible && (strength || (store && std::atoi(store) != 0));
@@ -402,6 +410,8 @@ StrengthFields Stepper::strengthFields() const {
   copy(f.sxz, s.strength->sxz);
   copy(f.plasticStrain, s.strength->epsP);
   copy(f.damage, s.strength->damage);
+  if (s.strength->viscositySwitch()) copy(f.viscosityAlpha, s.strength->alpha);
+  if (s.strength->plasticStrainRate()) copy(f.plasticStrainRate, s.strength->plasticRate);
   f.stt.resize(s.n);
   f.temperature.resize(s.n);
   for (std::size_t i = 0; i < s.n; ++i) {

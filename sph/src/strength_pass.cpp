@@ -6,12 +6,28 @@
 #include <type_traits>
 #include <variant>
 
+#include "detail/force_lanes.hpp"
 #include "detail/parallel.hpp"
+#include "detail/stress_lanes.hpp"
 #include "hvi/sph/kernel.hpp"
 #include "hvi/sph/pair_stress.hpp"
 
 namespace hvi::sph::detail {
 namespace {
+
+// The viscosity switch's inputs and output (docs/strength.md, "SPH viscosity switch").
+struct SwitchArgs {
+  const double* alpha;  // alpha_i of every point (p.alpha)
+  double betaPerAlpha;  // beta_ij = betaPerAlpha alpha_ij
+  double* divv;         // div v of the reals (written)
+};
+
+// A row's pair sums: the velocity gradient, the stress force and power, the hoop part (r-z)
+// and the most negative phi_ij of the switched viscosity.
+struct RowSums {
+  double gxx = 0.0, gxz = 0.0, gzx = 0.0, gzz = 0.0;
+  double ax = 0.0, az = 0.0, de = 0.0, hoop = 0.0, phiMin = 0.0;
+};
 
 // Each particle gathers over its own list, as the force pass does (fixed summation order, no
 // atomics). The velocity gradient, the stress force and the stress power all sum over every
@@ -20,135 +36,236 @@ namespace {
 // continuity rate, was tried: at a contact next to the r-z axis it let the interface particles
 // run away, v_z 40 v0 at 1 us in SphStrength.ElasticWaveTravelsAtLongitudinalSpeedInRz.)
 //
+// With `Switch` the Monaghan viscosity of the pair, with alpha_ij = (alpha_i + alpha_j) / 2,
+// enters T_ab as -r_ab Pi_ab I: the force -mu_b r_ab Pi grad W and the power
+// (1/2) mu_b r_ab Pi v_ab . grad W of pair_force.hpp's viscous part (its compatible share is
+// the even 1/2 of the stress terms).
+template <class K, bool RZ, bool Cached, bool Pairs, bool Switch>
+RowSums scalarRow(const PairArrays& a, std::size_t i, const int* nb, const double* wc, int cnt,
+                  const StressPoints& p, double q2dp, int power, const SwitchArgs& sw,
+                  double* pwx, double* pwz) {
+  const double xi = a.x[i], zi = a.z[i], vxi = a.vx[i], vzi = a.vz[i], hi = a.h[i];
+  const Sym2 ti{p.txx[i], p.tzz[i], p.txz[i]}, ri{p.rxx[i], p.rzz[i], p.rxz[i]};
+  const double ih2i = 1.0 / (hi * hi);
+  const double wdpi = K::value(q2dp * hi * hi, hi, ih2i);
+  RowSums r;
+  for (int k = 0; k < cnt; ++k) {
+    const std::size_t j = static_cast<std::size_t>(nb[k]);
+    const double hj = a.h[j];
+    double ih2 = ih2i, hij = hi, wdp = wdpi;
+    if (hj != hi) {
+      hij = 0.5 * (hi + hj);
+      ih2 = 1.0 / (hij * hij);
+      wdp = K::value(q2dp * hij * hij, hij, ih2);
+    }
+    const double dx = xi - a.x[j], dz = zi - a.z[j];
+    const double r2 = dx * dx + dz * dz;
+    double w;
+    if (Cached && wc) {
+      w = wc[k];
+    } else {
+      w = K::value(r2, hij, ih2);
+    }
+    if (w == 0.0) continue;
+    const double f = K::gradFactor(w, r2, hij, ih2);
+    const double gx = f * dx, gz = f * dz;  // grad_i W_ij
+    const double dvx = vxi - a.vx[j], dvz = vzi - a.vz[j];
+    const VelocityGradientTerm t = velocityGradientTerm(p.vol[j], -dvx, -dvz, gx, gz);
+    r.gxx += t.xx;
+    r.gxz += t.xz;
+    r.gzx += t.zx;
+    r.gzz += t.zz;
+    Sym2 tab{ti.xx + p.txx[j], ti.zz + p.tzz[j], ti.xz + p.txz[j]};
+    if (power > 0) {
+      const double fab = w / wdp;
+      double fn = fab;
+      for (int e = 1; e < power; ++e) fn *= fab;
+      tab.xx += fn * (ri.xx + p.rxx[j]);
+      tab.zz += fn * (ri.zz + p.rzz[j]);
+      tab.xz += fn * (ri.xz + p.rxz[j]);
+    }
+    if constexpr (Switch) {
+      const double aij = 0.5 * (sw.alpha[i] + sw.alpha[j]);
+      const MonaghanViscosity visc{aij, sw.betaPerAlpha * aij};
+      double phi = 0.0;
+      const double pi = visc(dvx * dx + dvz * dz, r2, hij, 0.5 * (a.c[i] + a.c[j]),
+                             0.5 * (a.rho[i] + a.rho[j]), phi);
+      const double rpi = RZ ? 0.5 * (a.rw[i] + a.rw[j]) * pi : pi;
+      tab.xx -= rpi;
+      tab.zz -= rpi;
+      r.phiMin = std::min(r.phiMin, phi);
+    }
+    if constexpr (RZ) r.hoop += a.mu[j] * p.htt[j] * w;
+    const StressPairTerm st = stressPairTerm(tab, a.mu[j], dvx, dvz, gx, gz);
+    r.ax += st.ax;
+    r.az += st.az;
+    r.de += st.de;
+    if constexpr (Pairs) {
+      // The compatible energy's remainder needs each pair acceleration times i's share of
+      // the pair's work; the stress power is split evenly (stressPairTerm), share 1/2.
+      pwx[k] += 0.5 * st.ax;
+      pwz[k] += 0.5 * st.az;
+    }
+  }
+  return r;
+}
+
+// The same sums from the lane kernel's per-pair terms (stress_lanes.hpp), added in list order
+// as scalarRow adds them: the same bits (a pair with W = 0 adds zeros).
+template <bool RZ, bool Pairs, bool Switch>
+RowSums laneRow(const StressRowTerms& t, int cnt, double* pwx, double* pwz) {
+  RowSums r;
+  for (int k = 0; k < cnt; ++k) {
+    r.gxx += t.gxx[k];
+    r.gxz += t.gxz[k];
+    r.gzx += t.gzx[k];
+    r.gzz += t.gzz[k];
+    if constexpr (Switch) r.phiMin = std::min(r.phiMin, t.phi[k]);
+    if constexpr (RZ) r.hoop += t.hoop[k];
+    r.ax += t.ax[k];
+    r.az += t.az[k];
+    r.de += t.de[k];
+    if constexpr (Pairs) {
+      pwx[k] += 0.5 * t.ax[k];
+      pwz[k] += 0.5 * t.az[k];
+    }
+  }
+  return r;
+}
+
 // r-z (docs/strength.md, "SPH with strength"): the in-plane tensor is weighted by the radius as
 // the pressure is (T = r s / rho^2), the pair sums are divided by r_i, and the hoop stress enters
 // as the pressure's hoop term does, H_i += sum_k mu_k (-r_k s_tt,k / rho_k^2) W_ik (k = i
 // included, times the axis correction), with a_r += H_i / r_i^2 and de += lam_i H_i / r_i (they
 // cancel particle by particle in the energy, as for the pressure).
-template <class K, bool RZ, bool Cached, bool Pairs>
+// `lanes`: the Gaussian lane kernel (null: the scalar loop).
+template <class K, bool RZ, bool Cached, bool Pairs, bool Switch>
 void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
                  const StressPoints& p, const double* sxx, const double* szz, const double* sxz,
                  const double* g, double hFactor, int power, const AxisCorrection* axis,
-                 const Rates& out, const StressRates& rs) {
+                 const Rates& out, const StressRates& rs, const SwitchArgs& sw,
+                 StressRowKernel lanes) {
   const long nr = static_cast<long>(nReal);
   const double q2dp = 1.0 / (hFactor * hFactor);  // (dp / h)^2
-#pragma omp parallel for schedule(static) if (nr > kParallelPairs)
-  for (long il = 0; il < nr; ++il) {
-    const std::size_t i = static_cast<std::size_t>(il);
-    const double xi = a.x[i], zi = a.z[i], vxi = a.vx[i], vzi = a.vz[i], hi = a.h[i];
-    const Sym2 ti{p.txx[i], p.tzz[i], p.txz[i]}, ri{p.rxx[i], p.rzz[i], p.rxz[i]};
-    const int* nb = list.index.data() + list.start[i];
-    // The state-n pass runs at the list's positions: cached W if the list has them, else the
-    // same W recomputed.
-    const double* wc = Cached && list.cacheW ? list.w.data() + list.start[i] : nullptr;
-    const int cnt = list.count[i];
-    const double ih2i = 1.0 / (hi * hi);
-    const double wdpi = K::value(q2dp * hi * hi, hi, ih2i);
-    double* pwx = Pairs ? out.pairWx + list.start[i] : nullptr;
-    double* pwz = Pairs ? out.pairWz + list.start[i] : nullptr;
-    double gxx = 0.0, gxz = 0.0, gzx = 0.0, gzz = 0.0;
-    double sax = 0.0, saz = 0.0, sde = 0.0, shoop = 0.0;
-    for (int k = 0; k < cnt; ++k) {
-      const std::size_t j = static_cast<std::size_t>(nb[k]);
-      const double hj = a.h[j];
-      double ih2 = ih2i, hij = hi, wdp = wdpi;
-      if (hj != hi) {
-        hij = 0.5 * (hi + hj);
-        ih2 = 1.0 / (hij * hij);
-        wdp = K::value(q2dp * hij * hij, hij, ih2);
-      }
-      const double dx = xi - a.x[j], dz = zi - a.z[j];
-      const double r2 = dx * dx + dz * dz;
-      double w;
-      if (Cached && wc) {
-        w = wc[k];
+  const StressLaneArrays la{a.x.data(),   a.z.data(),   a.vx.data(),  a.vz.data(),  a.h.data(),
+                            a.mu.data(),  a.rho.data(), a.c.data(),   a.rw.data(),  p.txx.data(),
+                            p.tzz.data(), p.txz.data(), p.rxx.data(), p.rzz.data(), p.rxz.data(),
+                            p.htt.data(), sw.alpha,     p.vol.data(), p.rec.data()};
+  const StressRowParams prm{q2dp, power, sw.betaPerAlpha};
+  const std::size_t cap = lanes ? (list.stride + 7) / 8 * 8 : 0;  // whole blocks of 8 lanes
+#pragma omp parallel if (nr > kParallelPairs)
+  {
+    // One scratch row per thread and pass (no allocation per pair).
+    std::vector<double> scratch(9 * cap);
+    double* s0 = scratch.data();
+    const StressRowTerms terms{s0,           s0 + cap,     s0 + 2 * cap,
+                               s0 + 3 * cap, s0 + 4 * cap, s0 + 5 * cap,
+                               s0 + 6 * cap, s0 + 7 * cap, s0 + 8 * cap};
+#pragma omp for schedule(static)
+    for (long il = 0; il < nr; ++il) {
+      const std::size_t i = static_cast<std::size_t>(il);
+      const int* nb = list.index.data() + list.start[i];
+      // The state-n pass runs at the list's positions: cached W if the list has them, else the
+      // same W recomputed.
+      const double* wc = Cached && list.cacheW ? list.w.data() + list.start[i] : nullptr;
+      const int cnt = list.count[i];
+      double* pwx = Pairs ? out.pairWx + list.start[i] : nullptr;
+      double* pwz = Pairs ? out.pairWz + list.start[i] : nullptr;
+      RowSums sums;
+      if (lanes) {
+        lanes(la, i, nb, wc, cnt, prm, terms);
+        sums = laneRow<RZ, Pairs, Switch>(terms, cnt, pwx, pwz);
       } else {
-        w = K::value(r2, hij, ih2);
+        sums = scalarRow<K, RZ, Cached, Pairs, Switch>(a, i, nb, wc, cnt, p, q2dp, power, sw, pwx,
+                                                      pwz);
       }
-      if (w == 0.0) continue;
-      const double f = K::gradFactor(w, r2, hij, ih2);
-      const double gx = f * dx, gz = f * dz;  // grad_i W_ij
-      const double dvx = vxi - a.vx[j], dvz = vzi - a.vz[j];
-      const VelocityGradientTerm t = velocityGradientTerm(a.mu[j] / a.rho[j], -dvx, -dvz, gx, gz);
-      gxx += t.xx;
-      gxz += t.xz;
-      gzx += t.zx;
-      gzz += t.zz;
-      Sym2 tab{ti.xx + p.txx[j], ti.zz + p.tzz[j], ti.xz + p.txz[j]};
-      if (power > 0) {
-        const double fab = w / wdp;
-        double fn = fab;
-        for (int e = 1; e < power; ++e) fn *= fab;
-        tab.xx += fn * (ri.xx + p.rxx[j]);
-        tab.zz += fn * (ri.zz + p.rzz[j]);
-        tab.xz += fn * (ri.xz + p.rxz[j]);
+      const double xi = a.x[i], hi = a.h[i];
+      const double gxx = sums.gxx, gxz = sums.gxz, gzx = sums.gzx, gzz = sums.gzz;
+      const double sax = sums.ax, saz = sums.az, sde = sums.de, shoop = sums.hoop;
+      const double phiMin = sums.phiMin;
+      double hoopRate = 0.0;
+      if constexpr (RZ) {
+        const double hoop =
+            (shoop + a.mu[i] * p.htt[i] * K::value(0.0, hi)) * (*axis)(a.rw[i], hi);
+        const double inv = 1.0 / a.rw[i];
+        const double sgn = xi >= 0.0 ? 1.0 : -1.0;  // a particle briefly past the axis
+        const double hoopAx = sgn * hoop * inv * inv;
+        out.ax[i] += sax * inv + hoopAx;
+        out.az[i] += saz * inv;
+        out.de[i] += sde * inv + a.lam[i] * hoop * inv;
+        if constexpr (Pairs) {
+          if (out.hoopAx) out.hoopAx[i] += hoopAx;
+        }
+        hoopRate = -a.lam[i];  // v_r / r
+      } else {
+        (void)axis;
+        out.ax[i] += sax;
+        out.az[i] += saz;
+        out.de[i] += sde;
       }
-      if constexpr (RZ) shoop += a.mu[j] * p.htt[j] * w;
-      const StressPairTerm st = stressPairTerm(tab, a.mu[j], dvx, dvz, gx, gz);
-      sax += st.ax;
-      saz += st.az;
-      sde += st.de;
-      if constexpr (Pairs) {
-        // The compatible energy's remainder needs each pair acceleration times i's share of
-        // the pair's work; the stress power is split evenly (stressPairTerm), share 1/2.
-        pwx[k] += 0.5 * st.ax;
-        pwz[k] += 0.5 * st.az;
+      const strength::VelocityGradient grad{gxx, gxz, gzx, gzz, hoopRate};
+      const strength::Deviator s{sxx[i], szz[i], sxz[i]};
+      const strength::Deviator ds = strength::jaumannRate(s, grad, g[i]);
+      rs.dsxx[i] = ds.xx;
+      rs.dszz[i] = ds.zz;
+      rs.dsxz[i] = ds.xz;
+      rs.strainRate[i] = strength::equivalentStrainRate(grad);
+      if constexpr (Switch) {
+        sw.divv[i] = gxx + gzz + hoopRate;
+        if constexpr (Cached) out.phi[i] = std::min(out.phi[i], phiMin);  // the time step's phi
+      } else {
+        (void)phiMin;
       }
     }
-    double hoopRate = 0.0;
-    if constexpr (RZ) {
-      const double hoop = (shoop + a.mu[i] * p.htt[i] * K::value(0.0, hi)) * (*axis)(a.rw[i], hi);
-      const double inv = 1.0 / a.rw[i];
-      const double sgn = xi >= 0.0 ? 1.0 : -1.0;  // a particle briefly past the axis
-      const double hoopAx = sgn * hoop * inv * inv;
-      out.ax[i] += sax * inv + hoopAx;
-      out.az[i] += saz * inv;
-      out.de[i] += sde * inv + a.lam[i] * hoop * inv;
-      if constexpr (Pairs) {
-        if (out.hoopAx) out.hoopAx[i] += hoopAx;
-      }
-      hoopRate = -a.lam[i];  // v_r / r
-    } else {
-      (void)axis;
-      out.ax[i] += sax;
-      out.az[i] += saz;
-      out.de[i] += sde;
-    }
-    const strength::VelocityGradient grad{gxx, gxz, gzx, gzz, hoopRate};
-    const strength::Deviator s{sxx[i], szz[i], sxz[i]};
-    const strength::Deviator ds = strength::jaumannRate(s, grad, g[i]);
-    rs.dsxx[i] = ds.xx;
-    rs.dszz[i] = ds.zz;
-    rs.dsxz[i] = ds.xz;
-    rs.strainRate[i] = strength::equivalentStrainRate(grad);
   }
 }
 
-template <class K, bool RZ>
+template <class K, bool RZ, bool Switch>
 void dispatch(bool cached, bool pairs, const PairArrays& a, std::size_t n,
               const NeighbourList& list, const StressPoints& p, const double* sxx,
               const double* szz, const double* sxz, const double* g, double hFactor, int power,
-              const AxisCorrection* axis, const Rates& out, const StressRates& rs) {
+              const AxisCorrection* axis, const Rates& out, const StressRates& rs,
+              const SwitchArgs& sw) {
+  // The Gaussian pair terms in lanes where the CPU has 4 or more (stress_lanes.hpp).
+  StressRowKernel lanes = nullptr;
+  if constexpr (std::is_same_v<K, GaussianKernel>) {
+    static const StressRowKernel k = [] {
+      StressRowKernel r = nullptr;
+      if (laneWidth() >= 8) r = stressRowKernelAvx512(RZ, Switch);
+      if (!r && laneWidth() >= 4) r = stressRowKernelAvx2(RZ, Switch);
+      return r;
+    }();
+    lanes = k;
+  }
   if (cached)
-    stressPairs<K, RZ, true, false>(a, n, list, p, sxx, szz, sxz, g, hFactor, power, axis, out, rs);
+    stressPairs<K, RZ, true, false, Switch>(a, n, list, p, sxx, szz, sxz, g, hFactor, power, axis,
+                                            out, rs, sw, lanes);
   else if (pairs)
-    stressPairs<K, RZ, false, true>(a, n, list, p, sxx, szz, sxz, g, hFactor, power, axis, out, rs);
+    stressPairs<K, RZ, false, true, Switch>(a, n, list, p, sxx, szz, sxz, g, hFactor, power, axis,
+                                            out, rs, sw, lanes);
   else
-    stressPairs<K, RZ, false, false>(a, n, list, p, sxx, szz, sxz, g, hFactor, power, axis, out,
-                                     rs);
+    stressPairs<K, RZ, false, false, Switch>(a, n, list, p, sxx, szz, sxz, g, hFactor, power,
+                                             axis, out, rs, sw, lanes);
 }
 
 template <class K>
-void dispatch(bool rz, bool cached, bool pairs, const PairArrays& a, std::size_t n,
+void dispatch(bool rz, bool sw, bool cached, bool pairs, const PairArrays& a, std::size_t n,
               const NeighbourList& list, const StressPoints& p, const double* sxx,
               const double* szz, const double* sxz, const double* g, double hFactor, int power,
-              const AxisCorrection* axis, const Rates& out, const StressRates& rs) {
-  if (rz)
-    dispatch<K, true>(cached, pairs, a, n, list, p, sxx, szz, sxz, g, hFactor, power, axis, out,
-                      rs);
+              const AxisCorrection* axis, const Rates& out, const StressRates& rs,
+              const SwitchArgs& swa) {
+  if (rz && sw)
+    dispatch<K, true, true>(cached, pairs, a, n, list, p, sxx, szz, sxz, g, hFactor, power, axis,
+                            out, rs, swa);
+  else if (rz)
+    dispatch<K, true, false>(cached, pairs, a, n, list, p, sxx, szz, sxz, g, hFactor, power, axis,
+                             out, rs, swa);
+  else if (sw)
+    dispatch<K, false, true>(cached, pairs, a, n, list, p, sxx, szz, sxz, g, hFactor, power, axis,
+                             out, rs, swa);
   else
-    dispatch<K, false>(cached, pairs, a, n, list, p, sxx, szz, sxz, g, hFactor, power, axis, out,
-                       rs);
+    dispatch<K, false, false>(cached, pairs, a, n, list, p, sxx, szz, sxz, g, hFactor, power,
+                              axis, out, rs, swa);
 }
 
 // Damage growth over a step (effect fracture, docs/strength.md): Grady-Kipp tensile damage as in
@@ -211,6 +328,11 @@ void StrengthModel::resize(std::size_t n) {
   forEachState(*this, [n](auto& v) { v.resize(n, 0.0); });
   for (auto* v : {&cL, &g_, &sxx0_, &szz0_, &sxz0_, &dsxx_, &dszz_, &dsxz_, &rate_})
     v->resize(n, 0.0);
+  if (switch_) {
+    alpha.resize(n, visc_.alpha);
+    divv_.resize(n, 0.0);
+  }
+  if (plasticRateOn_) plasticRate.resize(n, 0.0);
 }
 
 void StrengthModel::compact(const std::vector<unsigned char>& keep, std::size_t n0, std::size_t n) {
@@ -219,6 +341,12 @@ void StrengthModel::compact(const std::vector<unsigned char>& keep, std::size_t 
     for (std::size_t i = 0; i < n0; ++i)
       if (keep[i]) v[k++] = v[i];
   });
+  for (auto* v : {&alpha, &plasticRate}) {
+    if (v->empty()) continue;  // without the switch / the plastic rate
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < n0; ++i)
+      if (keep[i]) (*v)[k++] = (*v)[i];
+  }
   resize(n);
 }
 
@@ -233,6 +361,19 @@ void StrengthModel::beginStep(std::size_t n) {
 void StrengthModel::advance(double dt, std::size_t n, const PairArrays& a, const double* e,
                             const int* mat, bool accumulate) {
   const long nl = static_cast<long>(n);
+  if (switch_ && accumulate) {
+    // Morris and Monaghan (1997), with the source bounded by (alpha - alpha_i) as in Rosswog et
+    // al. (2000): explicit with the half state's div v, c and h (dt l c / h <= cfl l, small).
+    const double amax = visc_.alpha, amin = alphaMin_;
+#pragma omp parallel for schedule(static) if (nl > kParallelElements)
+    for (long il = 0; il < nl; ++il) {
+      const std::size_t i = static_cast<std::size_t>(il);
+      const double ai = alpha[i];
+      const double rate =
+          std::max(-divv_[i], 0.0) * (amax - ai) - (ai - amin) * decay_ * a.c[i] / a.h[i];
+      alpha[i] = std::clamp(ai + dt * rate, amin, amax);
+    }
+  }
   for (std::size_t k = 0; k < solids_.size(); ++k) {
     const int kk = static_cast<int>(k);
     if (!solids_[k]) {
@@ -252,7 +393,8 @@ void StrengthModel::advance(double dt, std::size_t n, const PairArrays& a, const
             strength::Deviator s{sxx0_[i] + dt * dsxx_[i], szz0_[i] + dt * dszz_[i],
                                  sxz0_[i] + dt * dsxz_[i]};
             const double eta = a.rho[i] / rho0;
-            const strength::YieldInput in{epsP[i], rate_[i], a.p[i],
+            const double rate = plasticRateOn_ ? plasticRate[i] : rate_[i];
+            const strength::YieldInput in{epsP[i], rate, a.p[i],
                                           sm.thermal.temperature(eta, e[i]), eta};
             // Damaged material keeps (1 - D) of its shear strength (docs/strength.md).
             const double d = damage[i];
@@ -262,6 +404,7 @@ void StrengthModel::advance(double dt, std::size_t n, const PairArrays& a, const
             szz[i] = s.zz;
             sxz[i] = s.xz;
             if (!accumulate) continue;
+            if (plasticRateOn_) plasticRate[i] = rr.plasticStrain / dt;
             epsP[i] += rr.plasticStrain;
             if (fracture_ && d < 1.0)
               damage[i] = growDamage(sm, law, d, dt, a.p[i], a.rho[i], a.c[i], g_[i], cL[i],
@@ -282,8 +425,18 @@ double StrengthModel::temperature(const PairArrays& a, const double* e, int mat,
 void StrengthModel::refreshPoints(const PairArrays& a, std::size_t n, const double* e,
                                   const int* mat, const Boundaries& bounds) {
   const std::size_t total = a.size();
-  for (auto* v : {&pts_.txx, &pts_.tzz, &pts_.txz, &pts_.rxx, &pts_.rzz, &pts_.rxz, &pts_.htt})
+  for (auto* v : {&pts_.txx, &pts_.tzz, &pts_.txz, &pts_.rxx, &pts_.rzz, &pts_.rxz, &pts_.htt,
+                  &pts_.vol})
     if (v->size() < total) v->resize(total);
+  // Every point's mu / rho once per state instead of once per pair (the same quotient).
+  const long nt = static_cast<long>(total);
+#pragma omp parallel for schedule(static) if (nt > kParallelElements)
+  for (long i = 0; i < nt; ++i) pts_.vol[i] = a.mu[i] / a.rho[i];
+  if (switch_) {
+    if (pts_.alpha.size() < total) pts_.alpha.resize(total);
+    std::copy(alpha.begin(), alpha.begin() + static_cast<std::ptrdiff_t>(n), pts_.alpha.begin());
+    bounds.copyGhostScalars(pts_.alpha.data(), n);
+  }
   const long nl = static_cast<long>(n);
 #pragma omp parallel for schedule(static) if (nl > kParallelElements)
   for (long il = 0; il < nl; ++il) {
@@ -318,6 +471,22 @@ void StrengthModel::refreshPoints(const PairArrays& a, std::size_t n, const doub
   bounds.mirrorGhostTensors(pts_.txx.data(), pts_.tzz.data(), pts_.txz.data(), n);
   bounds.mirrorGhostTensors(pts_.rxx.data(), pts_.rzz.data(), pts_.rxz.data(), n);
   bounds.copyGhostScalars(pts_.htt.data(), n);
+  if (laneWidth() >= 4 && kernel_ == cases::Kernel::Gaussian) {
+    // The lane kernels' records (StressPoints::rec), reals and ghosts.
+    if (pts_.rec.size() < 8 * total) pts_.rec.resize(8 * total);
+#pragma omp parallel for schedule(static) if (nt > kParallelElements)
+    for (long i = 0; i < nt; ++i) {
+      double* r = pts_.rec.data() + 8 * i;
+      r[0] = pts_.txx[i];
+      r[1] = pts_.tzz[i];
+      r[2] = pts_.txz[i];
+      r[3] = pts_.rxx[i];
+      r[4] = pts_.rzz[i];
+      r[5] = pts_.rxz[i];
+      r[6] = pts_.vol[i];
+      r[7] = a.mu[i];
+    }
+  }
 }
 
 void StrengthModel::pass(const PairArrays& a, std::size_t n, const NeighbourList& list, bool cached,
@@ -325,12 +494,29 @@ void StrengthModel::pass(const PairArrays& a, std::size_t n, const NeighbourList
   const StressRates rs{dsxx_.data(), dszz_.data(), dsxz_.data(), rate_.data()};
   const bool pairs = !cached && out.pairWx != nullptr;
   const bool rz = axis != nullptr;
+  const SwitchArgs sw{pts_.alpha.data(), switch_ ? visc_.beta / visc_.alpha : 0.0, divv_.data()};
   if (kernel_ == cases::Kernel::Gaussian)
-    dispatch<GaussianKernel>(rz, cached, pairs, a, n, list, pts_, sxx.data(), szz.data(),
-                             sxz.data(), g_.data(), hFactor_, power_, axis, out, rs);
+    dispatch<GaussianKernel>(rz, switch_, cached, pairs, a, n, list, pts_, sxx.data(), szz.data(),
+                             sxz.data(), g_.data(), hFactor_, power_, axis, out, rs, sw);
   else
-    dispatch<CubicSplineKernel>(rz, cached, pairs, a, n, list, pts_, sxx.data(), szz.data(),
-                                sxz.data(), g_.data(), hFactor_, power_, axis, out, rs);
+    dispatch<CubicSplineKernel>(rz, switch_, cached, pairs, a, n, list, pts_, sxx.data(),
+                                szz.data(), sxz.data(), g_.data(), hFactor_, power_, axis, out, rs,
+                                sw);
+}
+
+void StrengthModel::enablePlasticStrainRate(std::size_t n) {
+  plasticRateOn_ = true;
+  plasticRate.assign(n, 0.0);
+}
+
+void StrengthModel::enableViscositySwitch(const MonaghanViscosity& visc, double alphaMin,
+                                          double decay, std::size_t n) {
+  switch_ = visc.alpha > 0.0;  // alpha = 0: no viscosity to switch
+  visc_ = visc;
+  alphaMin_ = alphaMin;
+  decay_ = decay;
+  alpha.assign(n, visc.alpha);
+  divv_.assign(n, 0.0);
 }
 
 }  // namespace hvi::sph::detail

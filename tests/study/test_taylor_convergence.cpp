@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "hvi/test/taylor.hpp"
 
@@ -24,6 +25,26 @@ TEST(SphStrengthStudy, TaylorAnvilCopperConverges) {
     if (dx < 0.02) {
       EXPECT_NEAR(t.length / test::kTaylorFinalLength, 1.0, 0.05);
       EXPECT_NEAR(t.footDiameter / test::kTaylorFootDiameter, 1.0, 0.05);
+    }
+  }
+}
+
+// With the Morris-Monaghan viscosity switch (docs/strength.md, "SPH viscosity switch"):
+// measured L = 1.8198, 1.8095, 1.7880 cm (+12.3, +11.7, +10.3 %), D = 1.2765, 1.3415, 1.3390 cm
+// (-5.9, -1.1, -1.3 %) at D0/20, D0/30, D0/40, against +22.0, +18.6, +16.2 % with the constant
+// viscosity (0.56 to 0.64 of its excess). Asserted: energy exact, the foot within 5 % from
+// D0/30, and the length within 5 % at D0/40, which fails today (open).
+TEST(SphStrengthStudy, TaylorAnvilCopperWithViscositySwitch) {
+  const std::string sw = "sph.viscosity_switch=\"morris_monaghan\"";
+  for (double dx : {0.0381, 0.0254, 0.01905}) {
+    const test::TaylorShape t = test::taylorAnvil(dx, {sw});
+    test::printTaylor(dx, t);
+    EXPECT_LT(std::abs(t.energyDrift), 1e-12);
+    if (dx < 0.03) {
+      EXPECT_NEAR(t.footDiameter / test::kTaylorFootDiameter, 1.0, 0.05);
+    }
+    if (dx < 0.02) {
+      EXPECT_NEAR(t.length / test::kTaylorFinalLength, 1.0, 0.05);
     }
   }
 }

@@ -12,6 +12,7 @@
 #include "detail/passes.hpp"
 #include "hvi/cases/scene.hpp"
 #include "hvi/sph/neighbours.hpp"
+#include "hvi/sph/viscosity.hpp"
 #include "hvi/strength/strength.hpp"
 
 namespace hvi::sph::detail {
@@ -21,6 +22,11 @@ struct StressPoints {
   std::vector<double> txx, tzz, txz;  //!< rw s / rho^2 (rw = r in r-z, 1 planar)
   std::vector<double> rxx, rzz, rxz;  //!< rw times Monaghan's artificial stress R (/ rho^2)
   std::vector<double> htt;            //!< r-z hoop: -rw s_tt / rho^2 (the pressure's q part)
+  std::vector<double> alpha;          //!< viscosity switch only: alpha_i (ghosts as parents)
+  std::vector<double> vol;            //!< mu / rho of every point (the gradient's volume)
+  //! The lane kernels' copy, one 64-byte record a point: txx, tzz, txz, rxx, rzz, rxz, vol, mu
+  //! (stress_lanes_impl.hpp loads whole records instead of gathering 8 columns).
+  std::vector<double> rec;
 };
 
 //! Velocity gradient and the deviator's rate of the real particles, written by a stress pass.
@@ -78,6 +84,23 @@ class StrengthModel {
   void pass(const PairArrays& a, std::size_t n, const NeighbourList& list, bool cached,
             const AxisCorrection* axis, const Rates& out);
 
+  //! Morris and Monaghan's (1997) viscosity switch (docs/strength.md, "Viscosity switch"): the
+  //! pass then adds the Monaghan viscosity with the pair's alpha_ij = (alpha_i + alpha_j) / 2
+  //! and beta_ij = beta alpha_ij / alpha (the force passes must run inviscid), and the step's
+  //! end advances d alpha_i / dt = -(alpha_i - alphaMin) l c_i / h_i
+  //! + max(-div v_i, 0) (alpha - alpha_i). alpha_i starts at `visc.alpha` (its maximum).
+  void enableViscositySwitch(const MonaghanViscosity& visc, double alphaMin, double decay,
+                             std::size_t n);
+  [[nodiscard]] bool viscositySwitch() const { return switch_; }
+  std::vector<double> alpha;  //!< alpha_i of the reals (checkpointed with the switch only)
+
+  //! The yield law's strain rate becomes each particle's equivalent plastic strain rate of its
+  //! last step, d eps_p / dt (0 at the start; checkpointed), instead of the velocity
+  //! gradient's total equivalent rate (docs/strength.md, "SPH viscosity switch").
+  void enablePlasticStrainRate(std::size_t n);
+  [[nodiscard]] bool plasticStrainRate() const { return plasticRateOn_; }
+  std::vector<double> plasticRate;  //!< 1/us, of the reals
+
   //! Temperature of real particle i (snapshots), K.
   [[nodiscard]] double temperature(const PairArrays& a, const double* e, int mat,
                                    std::size_t i) const;
@@ -94,6 +117,11 @@ class StrengthModel {
   std::vector<double> g_;  // shear modulus of the reals at the last refresh, Mbar
   std::vector<double> sxx0_, szz0_, sxz0_, dsxx_, dszz_, dsxz_, rate_;
   StressPoints pts_;
+  bool switch_ = false;
+  MonaghanViscosity visc_;      // alpha, beta: the switch's maximum
+  double alphaMin_ = 0.0, decay_ = 0.0;
+  std::vector<double> divv_;    // div v of the reals from the last pass (the switch's source)
+  bool plasticRateOn_ = false;
 };
 
 }  // namespace hvi::sph::detail

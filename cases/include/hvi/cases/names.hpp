@@ -20,6 +20,8 @@ std::span<const std::string_view> limiterNames();   //!< minmod, van_leer, super
 std::span<const std::string_view> interfaceNames(); //!< whole_cell, conservative
 std::span<const std::string_view> energyFormNames(); //!< compatible, symmetric
 std::span<const std::string_view> rzFormNames();     //!< auto, ring, symmetric
+std::span<const std::string_view> viscositySwitchNames();  //!< off, morris_monaghan
+std::span<const std::string_view> yieldStrainRateNames();  //!< total, plastic
 
 std::string_view toString(SolverKind s);
 std::string_view toString(Boundary b);
@@ -29,5 +31,7 @@ std::string_view toString(Limiter l);
 std::string_view toString(InterfaceMode m);
 std::string_view toString(EnergyForm f);
 std::string_view toString(RzForm f);
+std::string_view toString(ViscositySwitch v);
+std::string_view toString(YieldStrainRate r);
 
 }  // namespace hvi::cases

@@ -112,6 +112,14 @@ enum class EnergyForm { Compatible, Symmetric };
 //! stress terms exist for the ring form only).
 enum class RzForm { Auto, Ring, Symmetric };
 
+//! A per-particle switch of the Monaghan viscosity (docs/strength.md, "Viscosity switch"): off
+//! (constant alpha, beta: the study's), or Morris and Monaghan's (1997) alpha_i.
+enum class ViscositySwitch { Off, MorrisMonaghan };
+//! The strain rate the SPH yield law sees (docs/strength.md, "SPH viscosity switch"): the
+//! kernel velocity gradient's total equivalent rate, or the particle's plastic strain rate of
+//! its last step.
+enum class YieldStrainRate { Total, Plastic };
+
 struct SphParams {
   double spacing = 0.01;   //!< particle spacing dx, cm
   double hFactor = 1.0;    //!< h = hFactor * spacing
@@ -129,6 +137,12 @@ struct SphParams {
   //! rho^2 of the tensile principal stresses, weighted per pair by (W(r) / W(dp))^exponent.
   double artificialStressEpsilon = 0.3;
   int artificialStressExponent = 4;
+  //! Viscosity switch (with strength only, docs/strength.md): alpha_i in [alphaMin, alpha],
+  //! beta_i = beta alpha_i / alpha, decay time h / (switchDecay c).
+  ViscositySwitch viscositySwitch = ViscositySwitch::Off;
+  double alphaMin = 0.1;
+  double switchDecay = 0.2;
+  YieldStrainRate yieldStrainRate = YieldStrainRate::Total;  //!< with strength only
 };
 
 enum class Limiter { Minmod, VanLeer, Superbee };

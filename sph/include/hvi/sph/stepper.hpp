@@ -38,6 +38,16 @@ struct StepperConfig {
   //! f_ab^n (Gray, Monaghan and Swift 2001: 0.3 and 4); epsilon = 0 switches it off.
   double artificialStress = 0.3;
   int artificialStressPower = 4;
+  //! Morris and Monaghan's (1997) viscosity switch (with strength and viscosity only;
+  //! docs/strength.md, "Viscosity switch"): per-particle alpha_i in [alphaMin, visc.alpha],
+  //! the pair's alpha the mean, beta scaled alike; decay time h / (switchDecay c). The force
+  //! passes then run inviscid and the strength pass adds the switched viscosity.
+  bool viscositySwitch = false;
+  double alphaMin = 0.1;
+  double switchDecay = 0.2;
+  //! The yield law's strain rate: the last step's plastic strain rate (true) instead of the
+  //! velocity gradient's total equivalent rate (docs/strength.md, "SPH viscosity switch").
+  bool plasticStrainRate = false;
 };
 
 //! The strength state of the real particles (empty vectors without the effect).
@@ -46,6 +56,8 @@ struct StrengthFields {
   std::vector<double> plasticStrain;       //!< equivalent plastic strain
   std::vector<double> damage;              //!< D in [0, 1]
   std::vector<double> temperature;         //!< K (docs/strength.md, Temperature); 0 for fluids
+  std::vector<double> viscosityAlpha;      //!< alpha_i of the viscosity switch (empty without)
+  std::vector<double> plasticStrainRate;   //!< last step's, 1/us (yield_strain_rate "plastic")
 };
 
 //! Advances a particle system with the scheme of docs/sph.md:

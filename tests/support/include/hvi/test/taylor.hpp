@@ -33,10 +33,12 @@ struct TaylorShape {
 //! half a spacing of material beyond its centre), the foot diameter twice the largest radius
 //! plus one spacing likewise (the outer particles are the least compressed: the undeformed
 //! spacing is their size to within the strain, a few %).
-inline TaylorShape taylorAnvil(double spacing) {
+//! `overrides`: further `key=value` settings of the scene (as `hvi run --set`), e.g. the
+//! viscosity switch.
+inline TaylorShape taylorAnvil(double spacing, std::vector<std::string> overrides = {}) {
+  overrides.insert(overrides.begin(), "sph.spacing=" + std::to_string(spacing) + " cm");
   const cases::Scene s =
-      cases::loadScene(cases::test::shippedDir() / "taylor_copper_sph.toml",
-                       {"sph.spacing=" + std::to_string(spacing) + " cm"});
+      cases::loadScene(cases::test::shippedDir() / "taylor_copper_sph.toml", overrides);
   SphSolver solver(s);
   const Totals t0 = solver.totals();
   while (solver.time() < s.tEnd) solver.advance(s.tEnd);

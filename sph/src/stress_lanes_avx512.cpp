@@ -1,0 +1,20 @@
+//! @file The stress lane kernels (detail/stress_lanes.hpp) for AVX512 (8 lanes), compiled with its
+//! flags where the compiler has them (sph/CMakeLists.txt); the strength pass calls them only on
+//! a CPU that has them (laneWidth()).
+#include "detail/stress_lanes.hpp"
+
+#if defined(__AVX512F__)
+#define HVI_LANES 8
+#define HVI_LANES_NS stress_lanes_avx512
+#include "detail/stress_lanes_impl.hpp"
+
+namespace hvi::sph::detail {
+StressRowKernel stressRowKernelAvx512(bool rz, bool viscositySwitch) {
+  return stress_lanes_avx512::pickStress(rz, viscositySwitch);
+}
+}  // namespace hvi::sph::detail
+#else
+namespace hvi::sph::detail {
+StressRowKernel stressRowKernelAvx512(bool, bool) { return nullptr; }
+}  // namespace hvi::sph::detail
+#endif
