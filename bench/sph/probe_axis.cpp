@@ -4,7 +4,12 @@
 //! the axial acceleration split into the pair sum's self part (-(1/r_i) sum mu_j q_i dW/dz),
 //! its neighbour part (-(1/r_i) sum mu_j q_j dW/dz), viscosity, and for comparison the planar
 //! (area-weighted) neighbour part -sum mu_j A_j dW/dz. Each part is integrated over the steps
-//! (sum dt a) per particle; the particle with the largest -v_z at the end is reported.
+//! (sum dt a) per particle; the particle with the largest -v_z at the end is reported; with a
+//! traced ID also the radial split (pair pressure sum, viscosity, hoop term incl. the viscous
+//! hoop of sph.rz_viscous_hoop). NSTEPS = 0: the fastest particle along -z over the whole run;
+//! NSTEPS < 0: every particle that ever moves along -z faster than RMAX (then a speed, cm/us),
+//! with where it started and its fastest -v_z while still compressed.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -20,6 +25,8 @@ using namespace hvi;
 
 struct Acc {
   double self = 0, nb = 0, visc = 0, nbPlanar = 0, selfPlanar = 0, total = 0;
+  double rPair = 0, rVisc = 0, hoopSum = 0;  // radial: pair pressure sum, viscosity, H_i
+  double hoopPi = 0;                         // sum_j nu_j Pi_ij W_ij (the viscous hoop's sum)
 };
 
 int main(int argc, char** argv) {
@@ -30,6 +37,45 @@ int main(int argc, char** argv) {
   const cases::Scene scene = cases::loadScene(path);
   sph::SphSolver solver(scene);
   const double alpha = scene.sph.alpha, beta = scene.sph.beta;
+  if (nsteps < 0) {
+    // Every particle that ever moves along -z faster than `rmax` (here a speed, cm/us): where
+    // it started, its fastest -v_z and when, and its fastest -v_z while still compressed
+    // (P > 1 % of its peak): the shocked state before the release adds to it.
+    struct Rec {
+      double r0 = 0, z0 = 0, best = 0, tBest = 0, rBest = 0, zBest = 0, shocked = 0, pPeak = 0;
+      int obj = -1;
+    };
+    std::map<long, Rec> rec;
+    {
+      const sph::ParticleSystem p = solver.stepper().particles();
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        Rec& r = rec[p.id[i]];
+        r.r0 = p.x[i], r.z0 = p.z[i], r.obj = p.object[i];
+      }
+    }
+    while (solver.time() < scene.tEnd) {
+      solver.advance(scene.tEnd);
+      const sph::ParticleSystem p = solver.stepper().particles();
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        Rec& r = rec[p.id[i]];
+        r.pPeak = std::max(r.pPeak, p.p[i]);
+        if (p.p[i] > 0.01 * r.pPeak) r.shocked = std::max(r.shocked, -p.vz[i]);
+        if (-p.vz[i] > r.best)
+          r.best = -p.vz[i], r.tBest = solver.time(), r.rBest = p.x[i], r.zBest = p.z[i];
+      }
+    }
+    int count = 0;
+    for (const auto& [id, r] : rec)
+      if (r.best > rmax) {
+        ++count;
+        std::printf("id %6ld body %d from (%.4f, %.4f): -vz max %.4f at t %.3f (%.4f, %.4f), "
+                    "compressed max %.4f, P peak %.4f\n",
+                    id, r.obj, r.r0, r.z0, r.best, r.tBest, r.rBest, r.zBest, r.shocked, r.pPeak);
+      }
+    std::printf("%d particles faster than %.4f cm/us along -z, %ld steps\n", count, rmax,
+                solver.step());
+    return 0;
+  }
   if (nsteps == 0) {
     // The whole run: the fastest particle along the impact (-v_z) after any step.
     double best = 0.0, bt = 0.0, bx = 0.0, bz = 0.0;
@@ -51,6 +97,7 @@ int main(int argc, char** argv) {
   using K = sph::GaussianKernel;
   const bool sym = sph::stepperConfig(scene).rzForm == cases::RzForm::Symmetric;
   const auto& ring = sph::detail::ringScale(scene.sph.kernel);
+  const sph::detail::AxisCorrection axisC(scene.sph.kernel);
   for (long s = 0; s < nsteps; ++s) {
     const sph::ParticleSystem p = solver.stepper().particles();
     const double t0 = solver.time();
@@ -70,11 +117,14 @@ int main(int argc, char** argv) {
           if (r2 >= 9.0 * h * h) continue;
           const double w = K::value(r2, h);
           const double gz = K::gradFactor(w, r2, h) * dz;
+          const double gx = K::gradFactor(w, r2, h) * dx;
           const double rj = sym ? ring.value(std::abs(p.x[j]), p.h[j]) : std::abs(p.x[j]);
           const double muj = p.m[j] / (2 * std::numbers::pi * rj);
           const double Aj = p.p[j] / (p.rho[j] * p.rho[j]), qj = sym ? Aj : rj * Aj;
           // planar reference: the weight rho_j dA_j = m_j / (2 pi |r_j|)
           const double dAj = p.m[j] / (2 * std::numbers::pi * std::abs(p.x[j]));
+          a.rPair += -muj * (qi + qj) * gx / ri;
+          a.hoopSum += muj * qj * w;
           a.self += -muj * qi * gz / ri;
           a.nb += -muj * qj * gz / ri;
           a.selfPlanar += -dAj * Ai * gz;
@@ -86,13 +136,21 @@ int main(int argc, char** argv) {
             const double pi = (-alpha * 0.5 * (p.c[i] + p.c[j]) * phi + beta * phi * phi) /
                               (0.5 * (p.rho[i] + p.rho[j]));
             a.visc += -muj * (sym ? 1.0 : 0.5 * (ri + rj)) * pi * gz / ri;
+            a.rVisc += -muj * (sym ? 1.0 : 0.5 * (ri + rj)) * pi * gx / ri;
+            a.hoopPi += muj * pi * w;
           }
         }
+      {  // the hoop term as the force passes form it (passes.cpp)
+        const double mui = p.m[i] / (2 * std::numbers::pi * ri), wii = K::value(0.0, p.h[i]);
+        const double H = a.hoopSum + mui * qi * wii + scene.sph.rzViscousHoop * a.hoopPi;
+        a.hoopSum = sym ? ring.slope(p.x[i], p.h[i]) / (ri * ri) * (H + Ai * ri * p.rho[i])
+                        : axisC(p.x[i], p.h[i]) * H / (ri * ri);
+      }
       now[p.id[i]] = a;
     }
-    double vzBefore = 0.0;
+    double vzBefore = 0.0, vxBefore = 0.0;
     for (std::size_t i = 0; i < n; ++i)
-      if (p.id[i] == trace) vzBefore = p.vz[i];
+      if (p.id[i] == trace) vzBefore = p.vz[i], vxBefore = p.vx[i];
     const double dt = solver.advance(scene.tEnd);
     (void)t0;
     if (trace >= 0 && now.count(trace)) {
@@ -103,6 +161,9 @@ int main(int argc, char** argv) {
           std::printf("step %3ld t %.4f r %.4f z %.4f vz %+.4f rho %.3f P %+.4f | dvz/dt %+8.3f  a_n: self %+8.3f nb %+8.3f visc %+8.3f sum %+8.3f | planar nb %+8.3f\n",
                       s, solver.time(), q.x[i], q.z[i], q.vz[i], q.rho[i], q.p[i], (q.vz[i] - vzBefore) / dt,
                       a.self, a.nb, a.visc, a.self + a.nb + a.visc, a.nbPlanar);
+          std::printf("         vr %+.4f | dvr/dt %+8.3f  a_r: pair %+8.3f visc %+8.3f hoop %+8.3f sum %+8.3f\n",
+                      q.vx[i], (q.vx[i] - vxBefore) / dt, a.rPair, a.rVisc, a.hoopSum,
+                      a.rPair + a.rVisc + a.hoopSum);
         }
     }
     for (auto& [id, a] : now) {

@@ -21,7 +21,7 @@ constexpr std::array<KeyRow<Scene>, 2> kTime{{
      .docValue = "**required**, time > start", .required = true},
 }};
 
-constexpr std::array<KeyRow<SphParams>, 18> kSph{{
+constexpr std::array<KeyRow<SphParams>, 19> kSph{{
     {.key = "spacing", .kind = K::Quantity, HVI_KEY_FIELD(SphParams, spacing),
      .ok = [](double v) { return v > 0.0; }, .problem = "must be > 0", .allowed = "a length > 0",
      .docValue = "length > 0, particle spacing dx", .docDefault = "`0.01 cm`"},
@@ -45,6 +45,13 @@ constexpr std::array<KeyRow<SphParams>, 18> kSph{{
                  "r_j / (s_i s_j), axially consistent at the axis), `\"ring\"` (r_j weights, "
                  "hoop correction C; docs/sph-rz.md)",
      .docDefault = "`\"auto\"`"},
+    // docs/sph-rz.md, "The viscous hoop": 0 reproduces the symmetric form as first merged.
+    {.key = "rz_viscous_hoop", .kind = K::Number, HVI_KEY_FIELD(SphParams, rzViscousHoop),
+     .ok = [](double v) { return v >= 0.0 && v <= 1.0; }, .problem = "must be in [0, 1]",
+     .allowed = "a number in [0, 1]",
+     .docValue = "in [0, 1]: share of the viscous pair term in the symmetric r-z form's hoop "
+                 "term (docs/sph-rz.md, \"The viscous hoop\"); r-z symmetric form only",
+     .docDefault = "0"},
     {.key = "alpha", .kind = K::Number, HVI_KEY_FIELD(SphParams, alpha),
      .ok = [](double v) { return v >= 0.0; }, .problem = "must be >= 0", .allowed = "alpha >= 0",
      .docValue = ">= 0, Monaghan viscosity alpha_Pi", .docDefault = "1.0"},

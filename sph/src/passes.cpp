@@ -42,10 +42,13 @@ inline void remainderRow(const int* nb, int cnt, const double* wx, const double*
 // with H_i = sum_k nu_k A_k W_ik (k = i included); its work -v_r a_hoop is charged to i itself,
 // so the hoop terms conserve energy particle by particle, as in the ring form.
 inline double symmetricRz(const PairArrays& a, std::size_t i, const RingScale* ring, double wii,
-                        double sax, double saz, double sde, double shoop, const Rates& out) {
+                        double sax, double saz, double sde, double shoop, double shoopPi,
+                        const Rates& out) {
   const double si = a.rs[i], inv = 1.0 / si;
   const double slope = ring->slope(std::abs(a.x[i]), a.h[i]);
-  const double hoop = slope * inv * inv * (shoop + a.mu[i] * a.q[i] * wii + a.q[i] * si * a.rho[i]);
+  const double hoop = slope * inv * inv *
+                      (shoop + a.mu[i] * a.q[i] * wii + a.q[i] * si * a.rho[i] +
+                       ring->viscousHoop * shoopPi);
   const double hoopAx = a.x[i] >= 0.0 ? hoop : -hoop;  // a particle briefly past the axis
   out.ax[i] = sax * inv + hoopAx;
   out.az[i] = saz * inv;
@@ -72,7 +75,8 @@ void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list
     const int cnt = list.count[i];
     const int oi = a.obj[i];
     const double ih2i = 1.0 / (A.h * A.h);
-    double sax = 0.0, saz = 0.0, sde = 0.0, sdrho = 0.0, shoop = 0.0, phi = 0.0;
+    double sax = 0.0, saz = 0.0, sde = 0.0, sdrho = 0.0, shoop = 0.0, shoopPi = 0.0, phi = 0.0;
+    const bool viscHoop = RZ && Viscous && ring && ring->viscousHoop != 0.0;
     // The compatible energy's pair data (half state only): w_ij times i's pair acceleration.
     constexpr bool kPairs = Compatible && !Cached;
     // Null pairWx: the remainder recomputes them (RemainderPass).
@@ -111,11 +115,13 @@ void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list
         if (a.obj[j] == oi) sdrho += r.drho;
       }
       if constexpr (RZ) shoop += r.hoop;
+      if (viscHoop) shoopPi += r.hoopPi;
       if constexpr (Viscous && Cached) phi = std::min(phi, r.phi);
     }
     if constexpr (RZ) {
       if (ring) {
-        const double hoopAx = symmetricRz(a, i, ring, K::value(0.0, A.h), sax, saz, sde, shoop, out);
+        const double hoopAx =
+            symmetricRz(a, i, ring, K::value(0.0, A.h), sax, saz, sde, shoop, shoopPi, out);
         if constexpr (kPairs) out.hoopAx[i] = hoopAx;
         if constexpr (Cached) out.drho[i] = sdrho;
         if constexpr (Cached) out.phi[i] = phi;
@@ -170,10 +176,12 @@ void lanePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
 #pragma omp parallel if (nr > kParallelPairs)
   {
     // One scratch row per thread and pass (no allocation per pair).
-    std::vector<double> scratch(6 * cap);
+    std::vector<double> scratch(7 * cap);
     RowTerms t{scratch.data(), scratch.data() + cap,     scratch.data() + 2 * cap,
                scratch.data() + 3 * cap, scratch.data() + 4 * cap, scratch.data() + 5 * cap,
                nullptr, nullptr};
+    const bool viscHoop = RZ && Viscous && ring && ring->viscousHoop != 0.0;
+    if (viscHoop) t.hoopPi = scratch.data() + 6 * cap;
 #pragma omp for schedule(static)
     for (long il = 0; il < nr; ++il) {
       const std::size_t i = static_cast<std::size_t>(il);
@@ -185,7 +193,9 @@ void lanePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
       kernel(la, i, list.index.data() + list.start[i],
              Cached && list.cacheW ? list.w.data() + list.start[i] : nullptr,
              cnt, visc.alpha, visc.beta, t);
-      double sax = 0.0, saz = 0.0, sde = 0.0, sdrho = 0.0, shoop = 0.0, phi = 0.0;
+      double sax = 0.0, saz = 0.0, sde = 0.0, sdrho = 0.0, shoop = 0.0, shoopPi = 0.0, phi = 0.0;
+      if (viscHoop)
+        for (int k = 0; k < cnt; ++k) shoopPi += t.hoopPi[k];
       for (int k = 0; k < cnt; ++k) {
         sax += t.ax[k];
         saz += t.az[k];
@@ -196,8 +206,8 @@ void lanePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
       }
       if constexpr (RZ) {
         if (ring) {
-          const double hoopAx =
-              symmetricRz(a, i, ring, GaussianKernel::value(0.0, a.h[i]), sax, saz, sde, shoop, out);
+          const double hoopAx = symmetricRz(a, i, ring, GaussianKernel::value(0.0, a.h[i]), sax,
+                                            saz, sde, shoop, shoopPi, out);
           if constexpr (kPairs) out.hoopAx[i] = hoopAx;
           if constexpr (Cached) out.drho[i] = sdrho;
           if constexpr (Cached) out.phi[i] = phi;

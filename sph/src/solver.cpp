@@ -13,6 +13,12 @@
 namespace hvi::sph {
 namespace {
 
+// docs/sph-rz.md, "Which form": the symmetric form where it is implemented (not with strength).
+cases::RzForm resolvedRzForm(const cases::Scene& scene) {
+  if (scene.sph.rzForm != cases::RzForm::Auto) return scene.sph.rzForm;
+  return scene.has(cases::Effect::Strength) ? cases::RzForm::Ring : cases::RzForm::Symmetric;
+}
+
 void validate(const cases::Scene& scene) {
   const auto& b = scene.domain.boundary;
   for (int s = 1; s < 4; ++s)
@@ -45,6 +51,12 @@ void validate(const cases::Scene& scene) {
       throw InputError(fmt::format("{}: sph.alpha_min = {} must be <= sph.alpha = {}", scene.path,
                                    scene.sph.alphaMin, scene.sph.alpha));
   }
+  if (scene.geometry == Geometry::Axisymmetric && scene.sph.rzViscousHoop != 0.0 &&
+      resolvedRzForm(scene) != cases::RzForm::Symmetric)
+    throw InputError(scene.path +
+                     ": sph.rz_viscous_hoop is implemented for the symmetric r-z form only "
+                     "(docs/sph-rz.md); set sph.rz_viscous_hoop = 0 or sph.rz_form = "
+                     "\"symmetric\" (\"auto\" is the ring form with strength)");
   if (!(scene.sph.alpha >= 0.0) || !(scene.sph.beta >= 0.0))
     throw InputError(fmt::format("{}: sph.alpha = {} and sph.beta = {} must be >= 0", scene.path,
                                  scene.sph.alpha, scene.sph.beta));
@@ -56,11 +68,6 @@ ParticleSystem filledBodies(const cases::Scene& scene) {
   return fillBodies(scene);
 }
 
-// docs/sph-rz.md, "Which form": the symmetric form where it is implemented (not with strength).
-cases::RzForm resolvedRzForm(const cases::Scene& scene) {
-  if (scene.sph.rzForm != cases::RzForm::Auto) return scene.sph.rzForm;
-  return scene.has(cases::Effect::Strength) ? cases::RzForm::Ring : cases::RzForm::Symmetric;
-}
 
 }  // namespace
 
@@ -78,6 +85,7 @@ StepperConfig stepperConfig(const cases::Scene& scene) {
   cfg.visc = {scene.sph.alpha, scene.sph.beta};
   cfg.energy = scene.sph.energy;
   cfg.rzForm = resolvedRzForm(scene);
+  cfg.rzViscousHoop = scene.sph.rzViscousHoop;
   cfg.cfl = scene.sph.cfl;
   cfg.domain = scene.domain;
   cfg.time = scene.tStart;

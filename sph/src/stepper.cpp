@@ -27,6 +27,14 @@ Stepper::Impl::Impl(ParticleSystem ps, std::vector<eos::Eos> mats, StepperConfig
           "SPH: sph.rz_form = \"symmetric\" is not implemented with the effect strength; set "
           "sph.rz_form = \"ring\" (docs/sph-rz.md)");
     ring = &detail::ringScale(cfg.kernel);
+    if (cfg.rzViscousHoop != 0.0) {
+      if (!(cfg.rzViscousHoop >= 0.0 && cfg.rzViscousHoop <= 1.0))
+        throw InputError(fmt::format("SPH: sph.rz_viscous_hoop = {} must be in [0, 1]",
+                                     cfg.rzViscousHoop));
+      ringOwn = std::make_unique<detail::RingScale>(*ring);
+      ringOwn->viscousHoop = cfg.rzViscousHoop;
+      ring = ringOwn.get();
+    }
   } else if (rz) {
     axis = std::make_unique<detail::AxisCorrection>(cfg.kernel);
   }

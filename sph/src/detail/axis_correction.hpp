@@ -54,6 +54,9 @@ class RingScale {
   [[nodiscard]] double slope(double r, double h) const {
     return lookup(dsigma_, r / h, true) / std::sqrt(h);
   }
+  //! kappa, the share of the viscous pair coefficient in the hoop term (docs/sph-rz.md, "The
+  //! viscous hoop"; sph.rz_viscous_hoop): 0 in the shared tables, set in a stepper's own copy.
+  double viscousHoop = 0.0;
 
  private:
   [[nodiscard]] double lookup(const std::vector<double>& t, double u, bool derivative) const {

@@ -27,6 +27,7 @@ struct RowTerms {
   double* hoop;  //!< r-z: mu_j q_j W_ij
   double* phi;   //!< cached viscous pass: phi_ij (<= 0)
   double *pwx, *pwz;  //!< compatible half-state pass: w_ij times the pair acceleration (or null)
+  double* hoopPi = nullptr;  //!< r-z viscous, if not null: mu_j Pi_ij W_ij (the viscous hoop)
 };
 
 //! Terms of row i: `nb` its cnt neighbours, `wc` their cached W (cached pass, when the list

@@ -112,6 +112,7 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
     D coef = qi + qj;
     D halfPi = splat(0.0);
     D phij = splat(0.0);
+    D piRaw = splat(0.0);  // Pi_ij without the ring form's rbar weight (r-z viscous hoop)
     if constexpr (Viscous) {
       const D vdotx = dvx * dx + dvz * dz;
       const I approach = vdotx < 0.0;
@@ -123,6 +124,7 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
                      (0.5 * (rhoi + gather(a.rho, idx)));
         phij = select(approach, ph, splat(0.0));
         D rpi = select(approach, pi, splat(0.0));
+        piRaw = rpi;
         if constexpr (RZ) rpi = 0.5 * (rwi + gather(a.rw, idx)) * rpi;
         coef += rpi;
         halfPi = 0.5 * rpi;
@@ -159,6 +161,8 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
       store(out.drho + k, select(live & (objj == oi), muj * vdg, zero));
     }
     if constexpr (RZ) store(out.hoop + k, select(live, muj * qj * w, zero));
+    if constexpr (RZ && Viscous)
+      if (out.hoopPi) store(out.hoopPi + k, select(live, muj * piRaw * w, zero));
     if constexpr (Viscous && Cached) store(out.phi + k, select(live, phij, zero));
   }
   (void)rwi;

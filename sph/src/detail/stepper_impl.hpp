@@ -65,6 +65,7 @@ struct Stepper::Impl {
   detail::Boundaries bounds;
   std::unique_ptr<detail::AxisCorrection> axis;  // r-z ring form only
   const detail::RingScale* ring = nullptr;       // r-z symmetric form only
+  std::unique_ptr<detail::RingScale> ringOwn;    // its copy with a viscous hoop factor
   std::unique_ptr<detail::StrengthModel> strength;  // effect strength only
   double radiusFactor = 0.0;   // list radius / h_ij: kernel support + skin
   bool rz = false;

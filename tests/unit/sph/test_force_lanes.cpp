@@ -94,10 +94,10 @@ void checkPolicy(RowKernel kernel, const char* name) {
       wc[static_cast<std::size_t>(k)] = GaussianKernel::value(dx * dx + dz * dz, 0.5 * (p.h[i] + p.h[j]));
     }
     const std::size_t cap = (nb.size() + 7) / 8 * 8;
-    std::vector<double> buf(8 * cap, -7.0);
+    std::vector<double> buf(9 * cap, -7.0);
     const RowTerms t{buf.data(),           buf.data() + cap,     buf.data() + 2 * cap,
                      buf.data() + 3 * cap, buf.data() + 4 * cap, buf.data() + 5 * cap,
-                     buf.data() + 6 * cap, buf.data() + 7 * cap};
+                     buf.data() + 6 * cap, buf.data() + 7 * cap, buf.data() + 8 * cap};
     kernel(la, i, nb.data(), Cached ? wc.data() : nullptr, cnt, visc.alpha, visc.beta, t);
     const PairState a = p.state(i, RZ);
     for (int k = 0; k < cnt; ++k) {
@@ -122,6 +122,9 @@ void checkPolicy(RowKernel kernel, const char* name) {
       }
       if (RZ) {
         EXPECT_EQ(t.hoop[ks], live ? r.hoop : 0.0);
+      }
+      if (RZ && Viscous) {  // the symmetric form's viscous hoop (docs/sph-rz.md)
+        EXPECT_EQ(t.hoopPi[ks], live ? r.hoopPi : 0.0);
       }
       if (Viscous && Cached) {
         EXPECT_EQ(t.phi[ks], live ? r.phi : 0.0);

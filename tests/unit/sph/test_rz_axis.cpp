@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "hvi/cases/names.hpp"
 #include "hvi/sph/fill.hpp"
 #include "hvi/sph/kernel.hpp"
 #include "hvi/sph/sph.hpp"
@@ -170,6 +171,66 @@ TEST(RzAxis, AxialPressureGradientAtTheAxis) {
   const AxialGradient sym = axialGradient(cases::RzForm::Symmetric);
   EXPECT_NEAR(sym.bulk, 1.0, 0.01);
   EXPECT_NEAR(sym.axis, 1.0, 0.02);
+}
+
+}  // namespace
+}  // namespace hvi::sph
+
+namespace hvi::sph {
+namespace {
+
+// A planar shock running along the axis: cold gas (gamma = 5/3, rho = 1) flowing at 1 cm/us
+// in -z onto a wall at z = 0, the planar Noh problem turned along z (shock at z = t/3, gas at
+// rest behind it). The exact flow has v_r = 0 everywhere, so any radial velocity is the
+// scheme's; in planar geometry the same lattice keeps v_x = 0 by symmetry. Returned: the rms
+// of v_r over the particles within 3 h of the axis and over those between 10 h and 20 h.
+struct RadialErrors {
+  double axis, bulk;
+};
+RadialErrors axialShock(double alpha, double kappa, cases::RzForm form = cases::RzForm::Symmetric) {
+  const double dx = 0.01, t = 0.15;
+  auto s = test::baseScene(Geometry::Axisymmetric, 0.0, 0.25, 0.0, 0.25, dx,
+                           {Effect::ArtificialViscosity, Effect::MassAdjustment});
+  s.domain.boundary[1] = s.domain.boundary[2] = cases::Boundary::Wall;
+  s.sph.rzForm = form;
+  s.sph.alpha = alpha;
+  s.sph.rzViscousHoop = kappa;
+  s.materials = {test::idealGas(5.0 / 3.0)};
+  s.bodies = {test::rectBody("gas", 0, 0.0, 0.25, 0.0, 0.25, {0.0, -1.0}, 1.0, 1e-4)};
+  SphSolver solver(s);
+  while (solver.time() < t) solver.advance(t);
+  const ParticleSystem p = solver.stepper().particles();
+  double sa = 0.0, sb = 0.0;
+  int na = 0, nb = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.x[i] < 3 * dx) sa += p.vx[i] * p.vx[i], ++na;
+    if (p.x[i] > 10 * dx && p.x[i] < 20 * dx) sb += p.vx[i] * p.vx[i], ++nb;
+  }
+  const RadialErrors e{std::sqrt(sa / na), std::sqrt(sb / nb)};
+  std::printf("axial shock, rz_form %s, alpha %.1f, viscous hoop %.2f, t = %.2f us: rms v_r "
+              "%.3e (r < 3h), %.3e (10-20 h) cm/us\n",
+              cases::toString(form).data(), alpha, kappa, t, e.axis, e.bulk);
+  return e;
+}
+
+// docs/sph-rz.md, "The speed bound: which particles, which force". Measured at alpha = 1 (rms
+// v_r next to the axis / at 10-20 h, cm/us): ring form 8.2e-2 / 7.0e-3; symmetric form
+// 2.53e-2 / 7.1e-3; symmetric with kappa = 0.25 2.59e-2 / 4.5e-4 (kappa 0.5: 3.3e-2 / 6.8e-3,
+// kappa 1: 5.3e-2 / 2.0e-2).
+TEST(RzAxis, AxialShockStaysPlanar) {
+  const RadialErrors ring = axialShock(1.0, 0.0, cases::RzForm::Ring);
+  const RadialErrors sym = axialShock(1.0, 0.0);
+  const RadialErrors hoop = axialShock(1.0, 0.25);
+  // The symmetric form halves the ring form's error at the axis (the first columns' weights,
+  // "The axial needle"): measured 0.31; 0.7 required.
+  EXPECT_LT(sym.axis, 0.7 * ring.axis);
+  // Without a viscous hoop Monaghan's Pi has no hoop stress, and the weight skew of its radial
+  // pair sum pulls the shocked gas inwards with ~Q_rr / r, in the bulk too; a share kappa ~ 1/3
+  // of Pi in the hoop term cancels the skew (docs/sph-rz.md). Measured: 16 times smaller at
+  // kappa = 0.25; a factor 3 required. Next to the axis another error dominates (not the
+  // target): kappa must not make it worse (measured +2.4 %; 10 % allowed for lattice noise).
+  EXPECT_LT(hoop.bulk, sym.bulk / 3.0);
+  EXPECT_LT(hoop.axis, 1.1 * sym.axis);
 }
 
 }  // namespace

@@ -49,6 +49,22 @@ TEST(Solver, RzFormAutoAndItsStrengthLimit) {
   }
 }
 
+// sph.rz_viscous_hoop (docs/sph-rz.md, "The viscous hoop") exists in the symmetric r-z form
+// only: with the ring form (or auto with strength) the scene is refused naming the key.
+TEST(Solver, RzViscousHoopNeedsTheSymmetricForm) {
+  auto s = smallImpact(Geometry::Axisymmetric, {});
+  s.sph.rzViscousHoop = 0.25;
+  EXPECT_EQ(stepperConfig(s).rzViscousHoop, 0.25);
+  EXPECT_NO_THROW((void)createSolver(s));
+  s.sph.rzForm = cases::RzForm::Ring;
+  try {
+    (void)createSolver(s);
+    ADD_FAILURE() << "the viscous hoop with the ring form was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("sph.rz_viscous_hoop"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Solver, TensionCutoffFollowsTheEffect) {
   auto s = smallImpact(Geometry::Planar, {});
   EXPECT_FALSE(std::get<eos::Tillotson>(sceneMaterials(s)[0]).tensionCutoff);

@@ -127,6 +127,11 @@ struct SphParams {
   Lattice lattice = Lattice::Square;
   EnergyForm energy = EnergyForm::Compatible;
   RzForm rzForm = RzForm::Auto;
+  //! r-z symmetric form: the share kappa in [0, 1] of the viscous pair coefficient Pi_ij that
+  //! enters the hoop term as the pressure's does (docs/sph-rz.md, "The viscous hoop"); 0 is the
+  //! earlier scheme (Monaghan's Pi with no hoop stress), 1 makes a uniform Pi exert no radial
+  //! force at the axis as a uniform pressure does.
+  double rzViscousHoop = 0.0;
   double alpha = 1.0;      //!< Monaghan alpha_Pi
   double beta = 2.0;       //!< Monaghan beta_Pi
   double cfl = 0.3;

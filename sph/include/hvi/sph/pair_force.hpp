@@ -33,6 +33,7 @@ struct PairResult {
   double share = 0.5;
   double drho = 0.0;  //!< mu_b v_ab . grad_a W_ab
   double hoop = 0.0;  //!< mu_b q_b W_ab
+  double hoopPi = 0.0;  //!< r-z, viscous: mu_b Pi_ab W_ab (the symmetric form's viscous hoop)
   double phi = 0.0;   //!< viscosity phi_ab (<= 0), for the time-step limit
 };
 
@@ -58,6 +59,7 @@ inline PairResult pairTerms(const PairState& a, const PairState& b, double w, do
     const double pi =
         visc(dvx * dx + dvz * dz, r2, h, 0.5 * (a.c + b.c), 0.5 * (a.rho + b.rho), res.phi);
     const double rpi = RZ ? 0.5 * (a.rw + b.rw) * pi : pi;
+    if constexpr (RZ) res.hoopPi = b.mu * pi * w;
     coef += rpi;
     halfPi = 0.5 * rpi;
   }

@@ -23,6 +23,7 @@ struct StepperConfig {
   cases::EnergyForm energy = cases::EnergyForm::Compatible;  //!< docs/sph.md, "Energy"
   //! docs/sph-rz.md; Symmetric selects that form, anything else the ring form
   cases::RzForm rzForm = cases::RzForm::Ring;
+  double rzViscousHoop = 0.0;  //!< symmetric r-z form: kappa of the viscous hoop (sph-rz.md)
   double cfl = 0.3;
   cases::Domain domain;  //!< walls / axis are mirrors, outflow sides remove particles
   double time = 0.0;     //!< us, time of the initial state
