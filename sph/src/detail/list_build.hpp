@@ -17,6 +17,22 @@ namespace hvi::sph::detail {
 //! rho_i = mu_i W_ii + sum_j mu_j W_ij (docs/sph.md (5)) over i's own object (`obj` may be null
 //! without `Density`). Each row is written by one thread in a fixed order, so the result does
 //! not depend on the thread count.
+//! Keeps of row i's cnt neighbours those j > i, in order (half lists), and records the row's
+//! reach (NeighbourList::reach). Returns the kept count.
+inline int halfRow(int* slot, double* w, int cnt, std::size_t i, std::size_t nReal, int* reach) {
+  const int self = static_cast<int>(i), reals = static_cast<int>(nReal);
+  int kept = 0, far = self + 1;
+  for (int k = 0; k < cnt; ++k) {
+    const int j = slot[k];
+    if (j <= self) continue;
+    if (w) w[kept] = w[k];
+    slot[kept++] = j;
+    if (j < reals) far = std::max(far, j + 1);
+  }
+  reach[i] = far;
+  return kept;
+}
+
 template <class K, bool Density>
 void buildList(const double* x, const double* z, const double* h, const double* mu,
                const int* obj, std::size_t n, std::size_t nReal, double radiusFactor,
@@ -34,6 +50,8 @@ void buildList(const double* x, const double* z, const double* h, const double* 
   const double* sh = grid.sortedH();
   const int nx = grid.nx(), nz = grid.nz();
   list.count.resize(nReal);
+  const bool half = list.half;
+  if (half) list.reach.resize(nReal);
   // A new list, or one whose particles changed in number (outflow), is sized by a first pass
   // that only counts (every row overflows a capacity of one), so its rows are as long as the
   // lattice needs, not a fixed guess.
@@ -158,7 +176,21 @@ void buildList(const double* x, const double* z, const double* h, const double* 
       if constexpr (Density) rho[i] = sum;
     }
   }
-    if (!overflow) return;
+    if (!overflow) {
+      // Half rows: cut after the whole build, so that a redo above widens the rows by their
+      // full counts (as without half rows; by the half counts, the compressed front overflowed
+      // a row and redid the build at nearly every step).
+      if (half) {
+        int* reach = list.reach.data();
+#pragma omp parallel for schedule(static) if (nr > kParallelPairs)
+        for (long il = 0; il < nr; ++il) {
+          const std::size_t i = static_cast<std::size_t>(il);
+          count[i] = halfRow(index + start[i], wc ? wc + start[i] : nullptr, count[i], i, nReal,
+                             reach);
+        }
+      }
+      return;
+    }
     // Compression (or a ghost-rich corner) filled a row: lay the rows out again, every row at
     // least a quarter + 4 above its count just found, and redo. A row's capacity never
     // shrinks. Widening only the full rows was tried: the compressed region's front then
