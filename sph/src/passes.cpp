@@ -386,10 +386,8 @@ void halfRemainder(const PairArrays& a, std::size_t nReal, const NeighbourList& 
   {
     std::vector<double> scratch(11 * cap);
     double* s0 = scratch.data();
-    RowTerms t{s0, s0 + cap, s0 + 2 * cap, nullptr, nullptr, nullptr, s0 + 3 * cap, s0 + 4 * cap};
-    t.axj = s0 + 5 * cap;
-    t.azj = s0 + 6 * cap;
-    t.dej = s0 + 7 * cap;
+    // The pair data only: no rates (null ax, the kernel's shortcut).
+    RowTerms t{nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, s0 + 3 * cap, s0 + 4 * cap};
     t.pwxj = s0 + 8 * cap;
     t.pwzj = s0 + 9 * cap;
     double* const other[1] = {s0 + 10 * cap};

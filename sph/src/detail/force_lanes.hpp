@@ -31,6 +31,7 @@ struct RowTerms {
   // pairTerms(j, i) bit for bit (drho masked as drho, phi shared: phi_ji = phi_ij).
   double *axj = nullptr, *azj = nullptr, *dej = nullptr, *drhoj = nullptr;
   double *pwxj = nullptr, *pwzj = nullptr;
+  // (A half kernel with pwx and a null ax writes the pair data pwx, pwz, pwxj, pwzj only.)
 };
 
 //! Terms of row i: `nb` its cnt neighbours, `wc` their cached W (cached pass, when the list

@@ -76,6 +76,8 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
   const D rwi = splat(a.rw[i]), mui = splat(a.mu[i]);
   const D ih2i = splat(1.0 / (a.h[i] * a.h[i]));
   const std::int64_t oi = a.obj[i];
+  // The half rows' remainder wants the pair data only (null ax): the rates are not stored.
+  const bool rates = !(kPairs && Half) || out.ax;
   I lane;
   for (int l = 0; l < L; ++l) lane[l] = l;
   for (int k = 0; k < cnt; k += L) {
@@ -139,7 +141,7 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
     if constexpr (Compatible) {
       const D ka = qi + halfPi, kb = qj + halfPi;
       de = muj * ka * vdg;
-      if constexpr (Half) store(out.dej + k, select(live, mui * kb * vdg, zero));
+      if (Half && rates) store(out.dej + k, select(live, mui * kb * vdg, zero));
       // Null pwx: the remainder recomputes them (passes.hpp, RemainderPass); no share then.
       if (kPairs && out.pwx) {
         const D s = vabs(ka) + vabs(kb);
@@ -165,14 +167,16 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
       de = 0.5 * mc * vdg;
       if constexpr (Half) store(out.dej + k, select(live, 0.5 * (mui * coef) * vdg, zero));
     }
-    if constexpr (Half) {
+    if (Half && rates) {
       const D mci = mui * coef;
       store(out.axj + k, select(live, mci * gx, zero));
       store(out.azj + k, select(live, mci * gz, zero));
     }
-    store(out.ax + k, select(live, ax, zero));
-    store(out.az + k, select(live, az, zero));
-    store(out.de + k, select(live, de, zero));
+    if (rates) {
+      store(out.ax + k, select(live, ax, zero));
+      store(out.az + k, select(live, az, zero));
+      store(out.de + k, select(live, de, zero));
+    }
     if constexpr (Cached) {
       I objj;
       for (int l = 0; l < L; ++l) objj[l] = a.obj[idx[l]];
