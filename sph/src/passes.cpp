@@ -246,29 +246,50 @@ struct HalfAcc {
   const NeighbourList& list;
   long nr, nb;
 
-  // Block b's rows and its spill: zeroes its accumulators, sizes its spill (grow only).
+  // Block b's rows and its spill: zeroes its accumulators, sizes its dense spill (grow only)
+  // to the other ends within kHalfBlock past its end (a lattice's rows reach a few hundred
+  // indices); farther ones (another body in contact, filled elsewhere in the order) become
+  // records, so that a few such pairs do not make a block's spill as long as the particles.
   std::size_t begin(long b, long b0, long b1) const {
     int far = static_cast<int>(b1);
     for (long i = b0; i < b1; ++i) far = std::max(far, list.reach[static_cast<std::size_t>(i)]);
-    const auto span = static_cast<std::size_t>(far - b1);
-    std::vector<double>& sp = list.spill[static_cast<std::size_t>(b)];
+    const auto span = static_cast<std::size_t>(std::min<long>(far - b1, kHalfBlock));
+    const auto bu = static_cast<std::size_t>(b);
+    std::vector<double>& sp = list.spill[bu];
     if (sp.size() < F * span) sp.resize(F * span);
     std::fill(sp.begin(), sp.begin() + static_cast<long>(F * span), 0.0);
-    list.spillSpan[static_cast<std::size_t>(b)] = span;
+    list.spillSpan[bu] = span;
+    list.farJ[bu].clear();
+    list.farV[bu].clear();
     for (int f = 0; f < F; ++f) std::fill(acc[f] + b0, acc[f] + b1, 0.0);
     return span;
   }
   // Adds the other-end terms v[f][k] of row entries k (neighbours nb) to their particles.
-  void scatter(const int* nb, int cnt, double* const* v, long b1, std::size_t span, double* sp) const {
+  void scatter(long b, const int* nb, int cnt, double* const* v, long b1, std::size_t span,
+               double* sp) const {
     for (int k = 0; k < cnt; ++k) {
       const long j = nb[k];
       if (j >= nr) continue;  // a ghost: no rate
       if (j < b1) {
         for (int f = 0; f < F; ++f) add(f, acc[f][j], v[f][k]);
-      } else {
+      } else if (static_cast<std::size_t>(j - b1) < span) {
         const auto o = static_cast<std::size_t>(j - b1);
         for (int f = 0; f < F; ++f) add(f, sp[static_cast<std::size_t>(f) * span + o], v[f][k]);
+      } else {
+        const auto bu = static_cast<std::size_t>(b);
+        list.farJ[bu].push_back(static_cast<int>(j));
+        for (int f = 0; f < F; ++f) list.farV[bu].push_back(v[f][k]);
       }
+    }
+  }
+  // After every block's gather: the far records, block by block in order (serial: few).
+  void applyFar() const {
+    for (long b = 0; b < nb; ++b) {
+      const auto bu = static_cast<std::size_t>(b);
+      const std::vector<int>& js = list.farJ[bu];
+      const double* v = list.farV[bu].data();
+      for (std::size_t r = 0; r < js.size(); ++r)
+        for (int f = 0; f < F; ++f) add(f, acc[f][js[r]], v[r * F + static_cast<std::size_t>(f)]);
     }
   }
   static void add(int f, double& to, double v) {
@@ -297,6 +318,8 @@ inline long halfBlocks(const NeighbourList& list, long nr) {
   if (list.spill.size() < static_cast<std::size_t>(nb)) {
     list.spill.resize(static_cast<std::size_t>(nb));
     list.spillSpan.resize(static_cast<std::size_t>(nb));
+    list.farJ.resize(static_cast<std::size_t>(nb));
+    list.farV.resize(static_cast<std::size_t>(nb));
   }
   return nb;
 }
@@ -358,12 +381,13 @@ void halfPass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
         out.de[i] += sde;
         if constexpr (Cached) out.drho[i] += sdrho;
         if constexpr (Viscous && Cached) out.phi[i] = std::min(out.phi[i], phi);
-        acc.scatter(nbr, cnt, other, b1, span, sp);
+        acc.scatter(b, nbr, cnt, other, b1, span, sp);
       }
     }
 #pragma omp for schedule(static)
     for (long c = 0; c < nb; ++c) acc.gather(c);
   }
+  acc.applyFar();
 }
 
 // laneRemainder on half rows (planar): each pair's w_ij a_ij and w_ji a_ji computed once.
@@ -410,15 +434,15 @@ void halfRemainder(const PairArrays& a, std::size_t nReal, const NeighbourList& 
           other[0][k] = t.pwxj[k] * (dax[j] - dxi) + t.pwzj[k] * (daz[j] - dzi);
         }
         sums[i] += s;
-        acc.scatter(nbr, cnt, other, b1, span, sp);
+        acc.scatter(b, nbr, cnt, other, b1, span, sp);
       }
     }
 #pragma omp for schedule(static)
-    for (long c = 0; c < nb; ++c) {
-      acc.gather(c);
-      const long c0 = c * kHalfBlock, c1 = std::min(nr, c0 + kHalfBlock);
-      for (long i = c0; i < c1; ++i) de[i] -= halfDt * (sums[i] / rs[i]);  // planar: no hoop
-    }
+    for (long c = 0; c < nb; ++c) acc.gather(c);
+#pragma omp single
+    acc.applyFar();
+#pragma omp for schedule(static)
+    for (long i = 0; i < nr; ++i) de[i] -= halfDt * (sums[i] / rs[i]);  // planar: no hoop
   }
 }
 

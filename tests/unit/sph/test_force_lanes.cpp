@@ -345,7 +345,8 @@ TEST(ForceLanes, ListScanKeepsThePairsOfTheOneAtATimeLoop) {
 // The passes on half rows against the full rows' (ForceLanes above: the same per-pair terms)
 // on a jittered lattice large enough for several of the half passes' blocks (2048 rows) and a
 // thread team, two objects of different h, every fifth point moving towards the middle, the
-// last 300 points ghosts. The half rows add the same terms in another order, so each rate may
+// last 4 lattice rows ghosts, rows 0 and 1 moved to the end of the order (pairs more than a
+// block past their row's block: the passes' far records). The half rows add the same terms in another order, so each rate may
 // differ by round-off only: for a sum of n terms any two orders differ by at most
 // 2 (n - 1) u sum |t_k| (u = 2^-53, Higham, "Accuracy and Stability of Numerical Algorithms",
 // 2nd ed., eq. 4.4, first order), with n the pairs of the particle (both ends' terms are the
@@ -364,7 +365,13 @@ Lattice lattice(std::uint32_t seed) {
   detail::PairArrays& a = l.a;
   const int side = 72;
   const double dp = 0.01;
-  for (int iz = 0; iz < side; ++iz)
+  // Rows 2 .. side-5, then rows 0 and 1 (so that row 2's neighbours below lie more than a
+  // block past its block: the passes' far records), then the last 4 rows as ghosts.
+  std::vector<int> rows;
+  for (int iz = 2; iz < side - 4; ++iz) rows.push_back(iz);
+  for (int iz : {0, 1}) rows.push_back(iz);
+  for (int iz = side - 4; iz < side; ++iz) rows.push_back(iz);
+  for (const int iz : rows)
     for (int ix = 0; ix < side; ++ix) {
       const bool upper = iz >= side / 2;
       const double x = ix * dp + 0.1 * dp * u(gen), z = iz * dp + 0.1 * dp * u(gen);
@@ -384,7 +391,7 @@ Lattice lattice(std::uint32_t seed) {
       a.q.push_back(a.p.back() / (a.rho.back() * a.rho.back()));
       a.lam.push_back(0.0);
     }
-  l.nReal = a.x.size() - 300;
+  l.nReal = a.x.size() - 4 * side;
   return l;
 }
 
@@ -438,6 +445,10 @@ void checkHalfPass() {
   const auto halfPass = detail::selectForcePass(kernel, false, Viscous, Compatible, Cached, true);
   ASSERT_NE(halfPass, nullptr);
   halfPass(a, n, half, visc, nullptr, nullptr, rh1.rates());
+  std::size_t farRecords = 0;
+  for (const auto& js : half.farJ) farRecords += js.size();
+  EXPECT_GT(farRecords, 0u);  // the lattice's order above exercises them
+  EXPECT_GT(half.spillSpan[0], 0u);  // and the dense spill
   setThreads(2);
   halfPass(a, n, half, visc, nullptr, nullptr, rh2.rates());
   setThreads(1);

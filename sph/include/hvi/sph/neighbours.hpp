@@ -62,6 +62,8 @@ struct NeighbourList {
   //! between steps so that the step loop does not allocate).
   mutable std::vector<std::vector<double>> spill;
   mutable std::vector<std::size_t> spillSpan;  //!< per block: the other ends past it it reaches
+  mutable std::vector<std::vector<int>> farJ;      //!< per block: other ends beyond the spill
+  mutable std::vector<std::vector<double>> farV;   //!< and their terms
   mutable std::vector<double> sums;
 };
 
