@@ -230,13 +230,18 @@ void lanePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
 // ---- Half lists (planar, Gaussian lanes): each pair evaluated once, from its lower end ----
 //
 // Row i lists only j > i; the kernel gives both ends' terms, i's are summed in row order and
-// j's added to j. The rows run in fixed blocks of kHalfBlock (not per thread): a block adds
+// j's added to j. The rows run in fixed blocks (halfBlockSize, not per thread): a block adds
 // the other ends inside itself directly (its rows are one thread's) and those past its end
 // into a spill buffer of its own; after all blocks, each particle adds the spills of the
 // blocks before it in block order. So every sum has one fixed order whatever the thread
 // count: the rates are bit for bit the same at 1 and 2 threads (and serial), and differ from
 // the full rows' gather form only by the order of the additions (round-off).
-constexpr long kHalfBlock = 2048;
+// 16 blocks (an even share for 1, 2, 4, 8 or 16 threads), of at least 2048 rows. Fixed by the
+// particle count alone, never by the thread count.
+constexpr long kHalfBlocks = 16, kHalfBlockMin = 2048;
+inline long halfBlockSize(long nr) {
+  return std::max(kHalfBlockMin, (nr + kHalfBlocks - 1) / kHalfBlocks);
+}
 
 // The block structure's bookkeeping: F accumulators per real particle (acc), the last one a
 // running minimum when LastIsMin (phi), the others sums.
@@ -244,16 +249,16 @@ template <int F, bool LastIsMin>
 struct HalfAcc {
   double* acc[F];
   const NeighbourList& list;
-  long nr, nb;
+  long nr, nb, bs;  // rows, blocks, rows per block
 
   // Block b's rows and its spill: zeroes its accumulators, sizes its dense spill (grow only)
-  // to the other ends within kHalfBlock past its end (a lattice's rows reach a few hundred
-  // indices); farther ones (another body in contact, filled elsewhere in the order) become
+  // to the other ends within a block's length past its end (a lattice's rows reach a few
+  // thousand indices); farther ones (another body in contact, filled elsewhere in the order) become
   // records, so that a few such pairs do not make a block's spill as long as the particles.
   std::size_t begin(long b, long b0, long b1) const {
     int far = static_cast<int>(b1);
     for (long i = b0; i < b1; ++i) far = std::max(far, list.reach[static_cast<std::size_t>(i)]);
-    const auto span = static_cast<std::size_t>(std::min<long>(far - b1, kHalfBlock));
+    const auto span = static_cast<std::size_t>(std::min<long>(far - b1, bs));
     const auto bu = static_cast<std::size_t>(b);
     std::vector<double>& sp = list.spill[bu];
     if (sp.size() < F * span) sp.resize(F * span);
@@ -300,9 +305,9 @@ struct HalfAcc {
   }
   // Block c's particles receive the spills of the blocks before it, in block order.
   void gather(long c) const {
-    const long c0 = c * kHalfBlock, c1 = std::min(nr, c0 + kHalfBlock);
+    const long c0 = c * bs, c1 = std::min(nr, c0 + bs);
     for (long b = 0; b < c; ++b) {
-      const long bb1 = std::min(nr, (b + 1) * kHalfBlock);
+      const long bb1 = std::min(nr, (b + 1) * bs);
       const std::size_t span = list.spillSpan[static_cast<std::size_t>(b)];
       const long hi = std::min(c1, bb1 + static_cast<long>(span));
       if (hi <= c0) continue;
@@ -314,7 +319,7 @@ struct HalfAcc {
 };
 
 inline long halfBlocks(const NeighbourList& list, long nr) {
-  const long nb = (nr + kHalfBlock - 1) / kHalfBlock;
+  const long nb = (nr + halfBlockSize(nr) - 1) / halfBlockSize(nr);
   if (list.spill.size() < static_cast<std::size_t>(nb)) {
     list.spill.resize(static_cast<std::size_t>(nb));
     list.spillSpan.resize(static_cast<std::size_t>(nb));
@@ -343,7 +348,7 @@ void halfPass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
                       a.obj.data()};
   const long nr = static_cast<long>(nReal);
   const long nb = halfBlocks(list, nr);
-  HalfAcc<F, Cached && Viscous> acc{{}, list, nr, nb};
+  HalfAcc<F, Cached && Viscous> acc{{}, list, nr, nb, halfBlockSize(nr)};
   double* fields[5] = {out.ax, out.az, out.de, out.drho, out.phi};
   for (int f = 0; f < F; ++f) acc.acc[f] = fields[f];
   if constexpr (Cached && !Viscous) std::fill(out.phi, out.phi + nr, 0.0);
@@ -360,7 +365,7 @@ void halfPass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
     double* const other[5] = {t.axj, t.azj, t.dej, t.drhoj, t.phi};
 #pragma omp for schedule(static)
     for (long b = 0; b < nb; ++b) {
-      const long b0 = b * kHalfBlock, b1 = std::min(nr, b0 + kHalfBlock);
+      const long b0 = b * acc.bs, b1 = std::min(nr, b0 + acc.bs);
       const std::size_t span = acc.begin(b, b0, b1);
       double* sp = list.spill[static_cast<std::size_t>(b)].data();
       for (long il = b0; il < b1; ++il) {
@@ -403,7 +408,7 @@ void halfRemainder(const PairArrays& a, std::size_t nReal, const NeighbourList& 
   const long nb = halfBlocks(list, nr);
   if (list.sums.size() < nReal) list.sums.resize(nReal);
   double* sums = list.sums.data();
-  HalfAcc<1, false> acc{{sums}, list, nr, nb};
+  HalfAcc<1, false> acc{{sums}, list, nr, nb, halfBlockSize(nr)};
   const std::size_t cap = (list.stride + 7) / 8 * 8;
   const double* rs = a.rs.data();
 #pragma omp parallel if (nr > kParallelPairs)
@@ -417,7 +422,7 @@ void halfRemainder(const PairArrays& a, std::size_t nReal, const NeighbourList& 
     double* const other[1] = {s0 + 10 * cap};
 #pragma omp for schedule(static)
     for (long b = 0; b < nb; ++b) {
-      const long b0 = b * kHalfBlock, b1 = std::min(nr, b0 + kHalfBlock);
+      const long b0 = b * acc.bs, b1 = std::min(nr, b0 + acc.bs);
       const std::size_t span = acc.begin(b, b0, b1);
       double* sp = list.spill[static_cast<std::size_t>(b)].data();
       for (long il = b0; il < b1; ++il) {
