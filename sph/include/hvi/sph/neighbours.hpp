@@ -49,9 +49,11 @@ struct NeighbourList {
   //! sized to the longest row exactly instead of with room for compression.
   bool fixedPoints = false;
   //! Half rows (the stepper's planar lane passes, docs/performance.md): row i lists only its
-  //! neighbours j > i (every ghost, and each real pair once), in the full row's order; the
-  //! capacities are still the full rows' (the build scans the full row, its density needs it).
+  //! neighbours j > i (every ghost, and each real pair once), in the full row's order, and
+  //! the capacities follow these counts. Not with cacheW.
   bool half = false;
+  //! Half rows: the capacity of the build's scratch row, which holds a whole row.
+  std::size_t scanStride = 0;
   std::vector<int> count;
   std::vector<int> index;
   std::vector<double> w;  //!< empty without cacheW
