@@ -13,11 +13,6 @@
 
 namespace hvi::sph::detail {
 
-//! Lists, for each real particle i < nReal, the points j != i (real or ghost) closer than
-//! radiusFactor * h_ij, caching W_ij (0 beyond the kernel support) if list.cacheW. With `Density`, also
-//! rho_i = mu_i W_ii + sum_j mu_j W_ij (docs/sph.md (5)) over i's own object (`obj` may be null
-//! without `Density`). Each row is written by one thread in a fixed order, so the result does
-//! not depend on the thread count.
 //! Half rows: copies of the full row `full` (cnt point indices, found in this order) those
 //! j > i to `row` while they fit its capacity, records the row's reach
 //! (NeighbourList::reach) and returns how many there are.
@@ -36,6 +31,11 @@ inline int copyHalfRow(const int* full, int cnt, int* row, int capacity, std::si
   return kept;
 }
 
+//! Lists, for each real particle i < nReal, the points j != i (real or ghost) closer than
+//! radiusFactor * h_ij, caching W_ij (0 beyond the kernel support) if list.cacheW. With `Density`, also
+//! rho_i = mu_i W_ii + sum_j mu_j W_ij (docs/sph.md (5)) over i's own object (`obj` may be null
+//! without `Density`). Each row is written by one thread in a fixed order, so the result does
+//! not depend on the thread count.
 template <class K, bool Density>
 void buildList(const double* x, const double* z, const double* h, const double* mu,
                const int* obj, std::size_t n, std::size_t nReal, double radiusFactor,
