@@ -8,14 +8,14 @@
 #include "detail/force_lanes_impl.hpp"
 
 namespace hvi::sph::detail {
-RowKernel rowKernelAvx512(bool rz, bool viscous, bool cached, bool compatible) {
-  return lanes_avx512::pick(rz, viscous, cached, compatible);
+RowKernel rowKernelAvx512(bool rz, bool viscous, bool cached, bool compatible, bool half) {
+  return lanes_avx512::pick(rz, viscous, cached, compatible, half);
 }
 ScanKernel scanKernelAvx512() { return &lanes_avx512::scan; }
 }  // namespace hvi::sph::detail
 #else
 namespace hvi::sph::detail {
-RowKernel rowKernelAvx512(bool, bool, bool, bool) { return nullptr; }
+RowKernel rowKernelAvx512(bool, bool, bool, bool, bool) { return nullptr; }
 ScanKernel scanKernelAvx512() { return nullptr; }
 }  // namespace hvi::sph::detail
 #endif

@@ -4,8 +4,8 @@
 #include "detail/force_lanes_impl.hpp"
 
 namespace hvi::sph::detail {
-RowKernel rowKernelBaseline(bool rz, bool viscous, bool cached, bool compatible) {
-  return lanes_baseline::pick(rz, viscous, cached, compatible);
+RowKernel rowKernelBaseline(bool rz, bool viscous, bool cached, bool compatible, bool half) {
+  return lanes_baseline::pick(rz, viscous, cached, compatible, half);
 }
 ScanKernel scanKernelBaseline() { return &lanes_baseline::scan; }
 }  // namespace hvi::sph::detail

@@ -237,6 +237,230 @@ void lanePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
   }
 }
 
+// ---- Half lists (planar, Gaussian lanes): each pair evaluated once, from its lower end ----
+//
+// Row i lists only j > i; the kernel gives both ends' terms, i's are summed in row order and
+// j's added to j. The rows run in fixed blocks (halfBlockSize, not per thread): a block adds
+// the other ends inside itself directly (its rows are one thread's) and those past its end
+// into a spill buffer of its own; after all blocks, each particle adds the spills of the
+// blocks before it in block order. So every sum has one fixed order whatever the thread
+// count: the rates are bit for bit the same at 1 and 2 threads (and serial), and differ from
+// the full rows' gather form only by the order of the additions (round-off).
+// 16 blocks (an even share for 1, 2, 4, 8 or 16 threads), of at least 2048 rows. Fixed by the
+// particle count alone, never by the thread count.
+constexpr long kHalfBlocks = 16, kHalfBlockMin = 2048;
+inline long halfBlockSize(long nr) {
+  return std::max(kHalfBlockMin, (nr + kHalfBlocks - 1) / kHalfBlocks);
+}
+
+// The block structure's bookkeeping: F accumulators per real particle (acc), the last one a
+// running minimum when LastIsMin (phi), the others sums.
+template <int F, bool LastIsMin>
+struct HalfAcc {
+  double* acc[F];
+  const NeighbourList& list;
+  long nr, nb, bs;  // rows, blocks, rows per block
+
+  // Block b's rows and its spill: zeroes its accumulators, sizes its dense spill (grow only)
+  // to the other ends within a block's length past its end (a lattice's rows reach a few
+  // thousand indices); farther ones (another body in contact, filled elsewhere in the order) become
+  // records, so that a few such pairs do not make a block's spill as long as the particles.
+  std::size_t begin(long b, long b0, long b1) const {
+    int far = static_cast<int>(b1);
+    for (long i = b0; i < b1; ++i) far = std::max(far, list.reach[static_cast<std::size_t>(i)]);
+    const auto span = static_cast<std::size_t>(std::min<long>(far - b1, bs));
+    const auto bu = static_cast<std::size_t>(b);
+    std::vector<double>& sp = list.spill[bu];
+    if (sp.size() < F * span) sp.resize(F * span);
+    std::fill(sp.begin(), sp.begin() + static_cast<long>(F * span), 0.0);
+    list.spillSpan[bu] = span;
+    list.farJ[bu].clear();
+    list.farV[bu].clear();
+    for (int f = 0; f < F; ++f) std::fill(acc[f] + b0, acc[f] + b1, 0.0);
+    return span;
+  }
+  // Adds the other-end terms v[f][k] of row entries k (neighbours nb) to their particles.
+  void scatter(long b, const int* nb, int cnt, double* const* v, long b1, std::size_t span,
+               double* sp) const {
+    for (int k = 0; k < cnt; ++k) {
+      const long j = nb[k];
+      if (j >= nr) continue;  // a ghost: no rate
+      if (j < b1) {
+        for (int f = 0; f < F; ++f) add(f, acc[f][j], v[f][k]);
+      } else if (static_cast<std::size_t>(j - b1) < span) {
+        const auto o = static_cast<std::size_t>(j - b1);
+        for (int f = 0; f < F; ++f) add(f, sp[static_cast<std::size_t>(f) * span + o], v[f][k]);
+      } else {
+        const auto bu = static_cast<std::size_t>(b);
+        list.farJ[bu].push_back(static_cast<int>(j));
+        for (int f = 0; f < F; ++f) list.farV[bu].push_back(v[f][k]);
+      }
+    }
+  }
+  // After every block's gather: the far records, block by block in order (serial: few).
+  void applyFar() const {
+    for (long b = 0; b < nb; ++b) {
+      const auto bu = static_cast<std::size_t>(b);
+      const std::vector<int>& js = list.farJ[bu];
+      const double* v = list.farV[bu].data();
+      for (std::size_t r = 0; r < js.size(); ++r)
+        for (int f = 0; f < F; ++f) add(f, acc[f][js[r]], v[r * F + static_cast<std::size_t>(f)]);
+    }
+  }
+  static void add(int f, double& to, double v) {
+    if (LastIsMin && f == F - 1)
+      to = std::min(to, v);
+    else
+      to += v;
+  }
+  // Block c's particles receive the spills of the blocks before it, in block order.
+  void gather(long c) const {
+    const long c0 = c * bs, c1 = std::min(nr, c0 + bs);
+    for (long b = 0; b < c; ++b) {
+      const long bb1 = std::min(nr, (b + 1) * bs);
+      const std::size_t span = list.spillSpan[static_cast<std::size_t>(b)];
+      const long hi = std::min(c1, bb1 + static_cast<long>(span));
+      if (hi <= c0) continue;
+      const double* sp = list.spill[static_cast<std::size_t>(b)].data();
+      for (int f = 0; f < F; ++f)
+        for (long j = c0; j < hi; ++j) add(f, acc[f][j], sp[static_cast<std::size_t>(f) * span + static_cast<std::size_t>(j - bb1)]);
+    }
+  }
+};
+
+inline long halfBlocks(const NeighbourList& list, long nr) {
+  const long nb = (nr + halfBlockSize(nr) - 1) / halfBlockSize(nr);
+  if (list.spill.size() < static_cast<std::size_t>(nb)) {
+    list.spill.resize(static_cast<std::size_t>(nb));
+    list.spillSpan.resize(static_cast<std::size_t>(nb));
+    list.farJ.resize(static_cast<std::size_t>(nb));
+    list.farV.resize(static_cast<std::size_t>(nb));
+  }
+  return nb;
+}
+
+RowKernel laneHalfKernel(bool viscous, bool cached, bool compatible) {
+  RowKernel k = nullptr;
+  if (laneWidth() >= 8) k = rowKernelAvx512(false, viscous, cached, compatible, true);
+  if (!k && laneWidth() >= 4) k = rowKernelAvx2(false, viscous, cached, compatible, true);
+  return k ? k : rowKernelBaseline(false, viscous, cached, compatible, true);
+}
+
+// lanePass on half rows (planar): the same per-pair terms, each pair's computed once.
+template <bool Viscous, bool Cached, bool Compatible>
+void halfPass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
+              const MonaghanViscosity& visc, const AxisCorrection*, const RingScale*,
+              const Rates& out) {
+  static const RowKernel kernel = laneHalfKernel(Viscous, Cached, Compatible);
+  constexpr int F = Cached ? (Viscous ? 5 : 4) : 3;
+  const LaneArrays la{a.x.data(),  a.z.data(), a.vx.data(), a.vz.data(), a.rho.data(),
+                      a.c.data(),  a.h.data(), a.mu.data(), a.rw.data(), a.q.data(),
+                      a.obj.data()};
+  const long nr = static_cast<long>(nReal);
+  const long nb = halfBlocks(list, nr);
+  HalfAcc<F, Cached && Viscous> acc{{}, list, nr, nb, halfBlockSize(nr)};
+  double* fields[5] = {out.ax, out.az, out.de, out.drho, out.phi};
+  for (int f = 0; f < F; ++f) acc.acc[f] = fields[f];
+  if constexpr (Cached && !Viscous) std::fill(out.phi, out.phi + nr, 0.0);
+  const std::size_t cap = (list.stride + 7) / 8 * 8;
+#pragma omp parallel if (nr > kParallelPairs)
+  {
+    std::vector<double> scratch(11 * cap);
+    double* s0 = scratch.data();
+    RowTerms t{s0, s0 + cap, s0 + 2 * cap, s0 + 3 * cap, nullptr, s0 + 4 * cap, nullptr, nullptr};
+    t.axj = s0 + 5 * cap;
+    t.azj = s0 + 6 * cap;
+    t.dej = s0 + 7 * cap;
+    t.drhoj = s0 + 8 * cap;
+    double* const other[5] = {t.axj, t.azj, t.dej, t.drhoj, t.phi};
+#pragma omp for schedule(static)
+    for (long b = 0; b < nb; ++b) {
+      const long b0 = b * acc.bs, b1 = std::min(nr, b0 + acc.bs);
+      const std::size_t span = acc.begin(b, b0, b1);
+      double* sp = list.spill[static_cast<std::size_t>(b)].data();
+      for (long il = b0; il < b1; ++il) {
+        const std::size_t i = static_cast<std::size_t>(il);
+        const int cnt = list.count[i];
+        const int* nbr = list.index.data() + list.start[i];
+        kernel(la, i, nbr, nullptr, cnt, visc.alpha, visc.beta, t);
+        double sax = 0.0, saz = 0.0, sde = 0.0, sdrho = 0.0, phi = 0.0;
+        for (int k = 0; k < cnt; ++k) {
+          sax += t.ax[k];
+          saz += t.az[k];
+          sde += t.de[k];
+          if constexpr (Cached) sdrho += t.drho[k];
+          if constexpr (Viscous && Cached) phi = std::min(phi, t.phi[k]);
+        }
+        out.ax[i] += sax;
+        out.az[i] += saz;
+        out.de[i] += sde;
+        if constexpr (Cached) out.drho[i] += sdrho;
+        if constexpr (Viscous && Cached) out.phi[i] = std::min(out.phi[i], phi);
+        acc.scatter(b, nbr, cnt, other, b1, span, sp);
+      }
+    }
+#pragma omp for schedule(static)
+    for (long c = 0; c < nb; ++c) acc.gather(c);
+  }
+  acc.applyFar();
+}
+
+// laneRemainder on half rows (planar): each pair's w_ij a_ij and w_ji a_ji computed once.
+template <bool Viscous>
+void halfRemainder(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
+                   const MonaghanViscosity& visc, const double* dax, const double* daz,
+                   const double*, double halfDt, double* de) {
+  static const RowKernel kernel = laneHalfKernel(Viscous, false, true);
+  const LaneArrays la{a.x.data(),  a.z.data(), a.vx.data(), a.vz.data(), a.rho.data(),
+                      a.c.data(),  a.h.data(), a.mu.data(), a.rw.data(), a.q.data(),
+                      a.obj.data()};
+  const long nr = static_cast<long>(nReal);
+  const long nb = halfBlocks(list, nr);
+  if (list.sums.size() < nReal) list.sums.resize(nReal);
+  double* sums = list.sums.data();
+  HalfAcc<1, false> acc{{sums}, list, nr, nb, halfBlockSize(nr)};
+  const std::size_t cap = (list.stride + 7) / 8 * 8;
+  const double* rs = a.rs.data();
+#pragma omp parallel if (nr > kParallelPairs)
+  {
+    std::vector<double> scratch(11 * cap);
+    double* s0 = scratch.data();
+    // The pair data only: no rates (null ax, the kernel's shortcut).
+    RowTerms t{nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, s0 + 3 * cap, s0 + 4 * cap};
+    t.pwxj = s0 + 8 * cap;
+    t.pwzj = s0 + 9 * cap;
+    double* const other[1] = {s0 + 10 * cap};
+#pragma omp for schedule(static)
+    for (long b = 0; b < nb; ++b) {
+      const long b0 = b * acc.bs, b1 = std::min(nr, b0 + acc.bs);
+      const std::size_t span = acc.begin(b, b0, b1);
+      double* sp = list.spill[static_cast<std::size_t>(b)].data();
+      for (long il = b0; il < b1; ++il) {
+        const std::size_t i = static_cast<std::size_t>(il);
+        const int cnt = list.count[i];
+        const int* nbr = list.index.data() + list.start[i];
+        kernel(la, i, nbr, nullptr, cnt, visc.alpha, visc.beta, t);
+        // remainderRow's sum for i; for j its own pair datum times da_j - da_i.
+        const double dxi = dax[i], dzi = daz[i];
+        double s = 0.0;
+        for (int k = 0; k < cnt; ++k) {
+          const std::size_t j = static_cast<std::size_t>(nbr[k]);
+          s += t.pwx[k] * (dxi - dax[j]) + t.pwz[k] * (dzi - daz[j]);
+          other[0][k] = t.pwxj[k] * (dax[j] - dxi) + t.pwzj[k] * (daz[j] - dzi);
+        }
+        sums[i] += s;
+        acc.scatter(b, nbr, cnt, other, b1, span, sp);
+      }
+    }
+#pragma omp for schedule(static)
+    for (long c = 0; c < nb; ++c) acc.gather(c);
+#pragma omp single
+    acc.applyFar();
+#pragma omp for schedule(static)
+    for (long i = 0; i < nr; ++i) de[i] -= halfDt * (sums[i] / rs[i]);  // planar: no hoop
+  }
+}
+
 template <class K, bool RZ, bool Viscous, bool Compatible>
 ForcePass pick(bool cached) {
   // 2 lanes (baseline x86-64: gathers element by element into 128-bit registers) measured no
@@ -293,6 +517,10 @@ int laneWidth() {
   return width;
 }
 
+bool halfListsAvailable(cases::Kernel kernel, bool rz) {
+  return kernel == cases::Kernel::Gaussian && !rz && laneWidth() >= 4;
+}
+
 ScanKernel scanKernel() {
   static const ScanKernel k = [] {
     ScanKernel s = nullptr;
@@ -304,7 +532,15 @@ ScanKernel scanKernel() {
 }
 
 ForcePass selectForcePass(cases::Kernel kernel, bool rz, bool viscous, bool compatible,
-                          bool cached) {
+                          bool cached, bool half) {
+  if (half) {
+    if (!halfListsAvailable(kernel, rz)) return nullptr;
+    if (cached)
+      return viscous ? (compatible ? &halfPass<true, true, true> : &halfPass<true, true, false>)
+                     : (compatible ? &halfPass<false, true, true> : &halfPass<false, true, false>);
+    return viscous ? (compatible ? &halfPass<true, false, true> : &halfPass<true, false, false>)
+                   : (compatible ? &halfPass<false, false, true> : &halfPass<false, false, false>);
+  }
   return kernel == cases::Kernel::Gaussian
              ? pick<GaussianKernel>(rz, viscous, compatible, cached)
              : pick<CubicSplineKernel>(rz, viscous, compatible, cached);
@@ -411,7 +647,11 @@ RemainderPass pickRemainder(bool rz, bool viscous) {
 
 }  // namespace
 
-RemainderPass selectRemainderPass(cases::Kernel kernel, bool rz, bool viscous) {
+RemainderPass selectRemainderPass(cases::Kernel kernel, bool rz, bool viscous, bool half) {
+  if (half) {
+    if (!halfListsAvailable(kernel, rz)) return nullptr;
+    return viscous ? &halfRemainder<true> : &halfRemainder<false>;
+  }
   return kernel == cases::Kernel::Gaussian ? pickRemainder<GaussianKernel>(rz, viscous)
                                            : pickRemainder<CubicSplineKernel>(rz, viscous);
 }

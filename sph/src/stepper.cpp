@@ -45,11 +45,6 @@ Stepper::Impl::Impl(ParticleSystem ps, std::vector<eos::Eos> mats, StepperConfig
   if (switched && !(cfg.visc.alpha > 0.0))
     throw InputError("SPH: the viscosity switch needs sph.alpha > 0 (its maximum)");
   const bool viscous = cfg.viscosity && !switched;
-  passCached = detail::selectForcePass(cfg.kernel, rz, viscous, compatible, true);
-  // (the symmetric r-z form runs the same pair kernels; only the drivers' r-z part differs)
-  passFresh = detail::selectForcePass(cfg.kernel, rz, viscous, compatible, false);
-  passList = detail::selectListPass(cfg.kernel);
-  passRemainder = detail::selectRemainderPass(cfg.kernel, rz, viscous);
   if (!(cfg.cfl > 0.0)) throw InputError(fmt::format("sph.cfl = {} must be > 0", cfg.cfl));
   // A particle moves at most (cfl/2) h_i in the half step (dt <= cfl h_i / |v_i|), so a pair
   // closes by at most cfl h_ij: a skin of cfl h_ij (plus a margin for rounding) keeps the
@@ -77,6 +72,18 @@ Stepper::Impl::Impl(ParticleSystem ps, std::vector<eos::Eos> mats, StepperConfig
   }
   const char* store = std::getenv("HVI_SPH_STORE_PAIRS");
   storePairs = compatible && (strength || (store && std::atoi(store) != 0));
+  // Half rows (docs/performance.md): each pair evaluated once where the passes have them
+  // (planar, Gaussian lanes) and nothing else reads the list (strength's pass and its stored
+  // pair data use full rows). HVI_SPH_HALF=0 keeps the full rows, for side-by-side runs.
+  const char* halfEnv = std::getenv("HVI_SPH_HALF");
+  const bool half = !strength && !storePairs && detail::halfListsAvailable(cfg.kernel, rz) &&
+                    !(halfEnv && std::atoi(halfEnv) == 0);
+  list.half = half;
+  passCached = detail::selectForcePass(cfg.kernel, rz, viscous, compatible, true, half);
+  // (the symmetric r-z form runs the same pair kernels; only the drivers' r-z part differs)
+  passFresh = detail::selectForcePass(cfg.kernel, rz, viscous, compatible, false, half);
+  passList = detail::selectListPass(cfg.kernel);
+  passRemainder = detail::selectRemainderPass(cfg.kernel, rz, viscous, half);
   t = cfg.time;
   resizeWork();
   corrector();

@@ -28,6 +28,11 @@ struct RowTerms {
   double* phi;   //!< cached viscous pass: phi_ij (<= 0)
   double *pwx, *pwz;  //!< compatible half-state pass: w_ij times the pair acceleration (or null)
   double* hoopPi = nullptr;  //!< r-z viscous, if not null: mu_j Pi_ij W_ij (the viscous hoop)
+  // Half lists (kernels picked with `half`): the same pair's terms of the other end j,
+  // pairTerms(j, i) bit for bit (drho masked as drho, phi shared: phi_ji = phi_ij).
+  double *axj = nullptr, *azj = nullptr, *dej = nullptr, *drhoj = nullptr;
+  double *pwxj = nullptr, *pwzj = nullptr;
+  // (A half kernel with pwx and a null ax writes the pair data pwx, pwz, pwxj, pwzj only.)
 };
 
 //! Terms of row i: `nb` its cnt neighbours, `wc` their cached W (cached pass, when the list
@@ -45,12 +50,14 @@ using ScanKernel = int (*)(const double* sx, const double* sz, const double* sh,
                            int* slot, double* w, int cnt, int last);
 ScanKernel scanKernel();  //!< AVX-512 where the CPU has it, else baseline
 
-//! The kernel for the policy, for baseline x86-64 (2 lanes).
-RowKernel rowKernelBaseline(bool rz, bool viscous, bool cached, bool compatible);
+//! The kernel for the policy, for baseline x86-64 (2 lanes). `half` (planar only, else null):
+//! the kernel also writes the j side's terms (RowTerms::axj ...) for half lists.
+RowKernel rowKernelBaseline(bool rz, bool viscous, bool cached, bool compatible,
+                            bool half = false);
 //! The same compiled for AVX-512 (8 lanes), or null where the CPU (or compiler) lacks it.
-RowKernel rowKernelAvx512(bool rz, bool viscous, bool cached, bool compatible);
+RowKernel rowKernelAvx512(bool rz, bool viscous, bool cached, bool compatible, bool half = false);
 //! The same compiled for AVX2 (4 lanes), or null without compiler support.
-RowKernel rowKernelAvx2(bool rz, bool viscous, bool cached, bool compatible);
+RowKernel rowKernelAvx2(bool rz, bool viscous, bool cached, bool compatible, bool half = false);
 ScanKernel scanKernelBaseline();
 ScanKernel scanKernelAvx512();  //!< null without compiler support
 ScanKernel scanKernelAvx2();    //!< null without compiler support

@@ -62,16 +62,22 @@ inline D expNegative(D x) {
   return p * (D)scale;
 }
 
-template <bool RZ, bool Viscous, bool Cached, bool Compatible>
+// Half: also the j side's terms of each pair (half lists, planar: no hoop term), each
+// pairTerms(j, i)'s operations on the same operands, so its bits: dx, dv and g change sign
+// exactly, r2, h_ij, Pi and vdg are symmetric, -(mu_i coef)(-g) = (mu_i coef) g.
+template <bool RZ, bool Viscous, bool Cached, bool Compatible, bool Half>
 void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, int cnt,
          double alpha, double beta, const RowTerms& out) {
+  static_assert(!(RZ && Half), "half lists are planar");
   using GK = GaussianKernel;
   constexpr bool kPairs = Compatible && !Cached;
   const D xi = splat(a.x[i]), zi = splat(a.z[i]), vxi = splat(a.vx[i]), vzi = splat(a.vz[i]);
   const D rhoi = splat(a.rho[i]), ci = splat(a.c[i]), hi = splat(a.h[i]), qi = splat(a.q[i]);
-  const D rwi = splat(a.rw[i]);
+  const D rwi = splat(a.rw[i]), mui = splat(a.mu[i]);
   const D ih2i = splat(1.0 / (a.h[i] * a.h[i]));
   const std::int64_t oi = a.obj[i];
+  // The half rows' remainder wants the pair data only (null ax): the rates are not stored.
+  const bool rates = !(kPairs && Half) || out.ax;
   I lane;
   for (int l = 0; l < L; ++l) lane[l] = l;
   for (int k = 0; k < cnt; k += L) {
@@ -132,33 +138,53 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
     }
     const D mc = muj * coef;
     const D ax = -mc * gx, az = -mc * gz;
+    const D zero = splat(0.0);
     D de;
     if constexpr (Compatible) {
       const D ka = qi + halfPi, kb = qj + halfPi;
       de = muj * ka * vdg;
+      if (Half && rates) store(out.dej + k, select(live, mui * kb * vdg, zero));
       // Null pwx: the remainder recomputes them (passes.hpp, RemainderPass); no share then.
       if (kPairs && out.pwx) {
         const D s = vabs(ka) + vabs(kb);
         const I pos = s > 0.0;
-        const D share = select(pos, vabs(ka) / select(pos, s, splat(1.0)), splat(0.5));
+        const D sd = select(pos, s, splat(1.0));
+        const D share = select(pos, vabs(ka) / sd, splat(0.5));
         const D px = select(live, share * ax, splat(0.0));
         const D pz = select(live, share * az, splat(0.0));
         for (int l = 0; l < L && k + l < cnt; ++l) {
           out.pwx[k + l] = px[l];
           out.pwz[k + l] = pz[l];
         }
+        if constexpr (Half) {
+          // The j side's weight |k_j| / (|k_j| + |k_i|): the same sum (commutative), so the
+          // same bits as pairTerms(j, i)'s; its pair acceleration is (mu_i coef) g.
+          const D sharej = select(pos, vabs(kb) / sd, splat(0.5));
+          const D mci = mui * coef;
+          store(out.pwxj + k, select(live, sharej * (mci * gx), zero));
+          store(out.pwzj + k, select(live, sharej * (mci * gz), zero));
+        }
       }
     } else {
       de = 0.5 * mc * vdg;
+      if constexpr (Half) store(out.dej + k, select(live, 0.5 * (mui * coef) * vdg, zero));
     }
-    const D zero = splat(0.0);
-    store(out.ax + k, select(live, ax, zero));
-    store(out.az + k, select(live, az, zero));
-    store(out.de + k, select(live, de, zero));
+    if (Half && rates) {
+      const D mci = mui * coef;
+      store(out.axj + k, select(live, mci * gx, zero));
+      store(out.azj + k, select(live, mci * gz, zero));
+    }
+    if (rates) {
+      store(out.ax + k, select(live, ax, zero));
+      store(out.az + k, select(live, az, zero));
+      store(out.de + k, select(live, de, zero));
+    }
     if constexpr (Cached) {
       I objj;
       for (int l = 0; l < L; ++l) objj[l] = a.obj[idx[l]];
-      store(out.drho + k, select(live & (objj == oi), muj * vdg, zero));
+      const I same = live & (objj == oi);
+      store(out.drho + k, select(same, muj * vdg, zero));
+      if constexpr (Half) store(out.drhoj + k, select(same, mui * vdg, zero));
     }
     if constexpr (RZ) store(out.hoop + k, select(live, muj * qj * w, zero));
     if constexpr (RZ && Viscous)
@@ -166,6 +192,7 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
     if constexpr (Viscous && Cached) store(out.phi + k, select(live, phij, zero));
   }
   (void)rwi;
+  (void)mui;
 }
 
 // The Gaussian W of lanes at squared distance r2 and pair length hij (kernel.hpp's
@@ -233,23 +260,28 @@ int scan(const double* sx, const double* sz, const double* sh, const int* order,
   return cnt;
 }
 
-template <bool RZ, bool Viscous, bool Cached>
+template <bool RZ, bool Viscous, bool Cached, bool Half>
 RowKernel pick3(bool compatible) {
-  return compatible ? &row<RZ, Viscous, Cached, true> : &row<RZ, Viscous, Cached, false>;
+  return compatible ? &row<RZ, Viscous, Cached, true, Half> : &row<RZ, Viscous, Cached, false, Half>;
 }
-template <bool RZ, bool Viscous>
+template <bool RZ, bool Viscous, bool Half>
 RowKernel pick2(bool cached, bool compatible) {
-  return cached ? pick3<RZ, Viscous, true>(compatible) : pick3<RZ, Viscous, false>(compatible);
+  return cached ? pick3<RZ, Viscous, true, Half>(compatible)
+                : pick3<RZ, Viscous, false, Half>(compatible);
 }
-template <bool RZ>
+template <bool RZ, bool Half>
 RowKernel pick1(bool viscous, bool cached, bool compatible) {
-  return viscous ? pick2<RZ, true>(cached, compatible) : pick2<RZ, false>(cached, compatible);
+  return viscous ? pick2<RZ, true, Half>(cached, compatible)
+                 : pick2<RZ, false, Half>(cached, compatible);
 }
 
 }  // namespace
 
-RowKernel pick(bool rz, bool viscous, bool cached, bool compatible) {
-  return rz ? pick1<true>(viscous, cached, compatible) : pick1<false>(viscous, cached, compatible);
+RowKernel pick(bool rz, bool viscous, bool cached, bool compatible, bool half) {
+  if (half)  // planar only
+    return rz ? nullptr : pick1<false, true>(viscous, cached, compatible);
+  return rz ? pick1<true, false>(viscous, cached, compatible)
+            : pick1<false, false>(viscous, cached, compatible);
 }
 
 }  // namespace hvi::sph::detail::HVI_LANES_NS

@@ -1,6 +1,7 @@
 //! @file Neighbour-list construction fused with the summation density (corrector).
 #pragma once
 #include <algorithm>
+#include <stdexcept>
 #include <type_traits>
 #include <cstddef>
 #include <vector>
@@ -11,6 +12,24 @@
 #include "hvi/sph/neighbours.hpp"
 
 namespace hvi::sph::detail {
+
+//! Half rows: copies of the full row `full` (cnt point indices, found in this order) those
+//! j > i to `row` while they fit its capacity, records the row's reach
+//! (NeighbourList::reach) and returns how many there are.
+inline int copyHalfRow(const int* full, int cnt, int* row, int capacity, std::size_t i,
+                       std::size_t nReal, int* reach) {
+  const int self = static_cast<int>(i), reals = static_cast<int>(nReal);
+  int kept = 0, far = self + 1;
+  for (int k = 0; k < cnt; ++k) {
+    const int j = full[k];
+    if (j <= self) continue;
+    if (kept < capacity) row[kept] = j;
+    ++kept;
+    if (j < reals) far = std::max(far, j + 1);
+  }
+  reach[i] = far;
+  return kept;
+}
 
 //! Lists, for each real particle i < nReal, the points j != i (real or ghost) closer than
 //! radiusFactor * h_ij, caching W_ij (0 beyond the kernel support) if list.cacheW. With `Density`, also
@@ -34,6 +53,14 @@ void buildList(const double* x, const double* z, const double* h, const double* 
   const double* sh = grid.sortedH();
   const int nx = grid.nx(), nz = grid.nz();
   list.count.resize(nReal);
+  // Half rows: each row is scanned whole into a scratch row per thread (its density sums the
+  // full row, in its order, as without half rows), then its j > i are copied to the list,
+  // whose rows are sized by the half counts (half the memory).
+  const bool half = list.half;
+  if (half && list.cacheW)
+    throw std::logic_error("NeighbourList: half rows do not cache W");
+  if (half) list.reach.resize(nReal);
+  if (half && list.scanStride == 0) list.scanStride = 64;
   // A new list, or one whose particles changed in number (outflow), is sized by a first pass
   // that only counts (every row overflows a capacity of one), so its rows are as long as the
   // lattice needs, not a fixed guess.
@@ -63,7 +90,9 @@ void buildList(const double* x, const double* z, const double* h, const double* 
     // them once); with neither the cache nor the density they are not computed.
     const bool needW = cacheW || Density;
     int* count = list.count.data();
-    int overflow = 0;
+    int overflow = 0, fullNeed = 0;
+    const int scanCap = static_cast<int>(list.scanStride);
+    int* reach = half ? list.reach.data() : nullptr;
     const long nr = static_cast<long>(nReal);
     const double rf2 = radiusFactor * radiusFactor;
     const ScanKernel scan = scanKernel();
@@ -72,14 +101,18 @@ void buildList(const double* x, const double* z, const double* h, const double* 
     const bool lanes = laneWidth() >= 4;
 #pragma omp parallel if (nr > kParallelPairs)
   {
-    std::vector<double> scratch(cacheW || !needW ? 0 : stride);
-#pragma omp for schedule(static) reduction(max : overflow)
+    std::vector<double> scratch(cacheW || !needW ? 0 : half ? list.scanStride : stride);
+    std::vector<int> fullRow(half ? list.scanStride : 0);
+#pragma omp for schedule(static) reduction(max : overflow, fullNeed)
     for (long il = 0; il < nr; ++il) {
       const std::size_t i = static_cast<std::size_t>(il);
       const double xi = x[i], zi = z[i], hi = h[i];
       const int cx = grid.cellX(xi), cz = grid.cellZ(zi);
       const std::size_t base = start[i];
       const int capacity = static_cast<int>(start[i + 1] - base);
+      // Where the scan writes the full row, and its room.
+      int* const rowOut = half ? fullRow.data() : index + base;
+      const int room = half ? scanCap : capacity;
       if (!lanes) {
         const double ih2i = 1.0 / (hi * hi), radi2 = rf2 * hi * hi;
         int cnt = 0;
@@ -101,8 +134,8 @@ void buildList(const double* x, const double* z, const double* h, const double* 
             }
             if (r2 >= rad2) continue;
             const double w = K::value(r2, hij, ih2);
-            if (cnt < capacity) {
-              index[base + static_cast<std::size_t>(cnt)] = j;
+            if (cnt < room) {
+              rowOut[cnt] = j;
               if (cacheW) wc[base + static_cast<std::size_t>(cnt)] = w;
             }
             ++cnt;
@@ -112,13 +145,20 @@ void buildList(const double* x, const double* z, const double* h, const double* 
           }
         }
         count[i] = cnt;
-        if (cnt >= capacity) overflow = 1;
         if constexpr (Density) rho[i] = sum;
+        if (!half) {
+          if (cnt >= capacity) overflow = 1;
+        } else if (cnt >= room) {
+          fullNeed = std::max(fullNeed, cnt);
+        } else {
+          count[i] = copyHalfRow(rowOut, cnt, index + base, capacity, i, nReal, reach);
+          if (count[i] > capacity) overflow = 1;
+        }
         continue;
       }
-      int* slot = index + base;
+      int* slot = rowOut;
       double* wr = cacheW ? wc + base : scratch.data();  // the Gaussian's W come with the scan
-      const int last = capacity - 1;
+      const int last = room - 1;
       // Pass 1, without a branch on the distance: every candidate's sorted position is written
       // at the row's end and kept (the end advances) if it is within radiusFactor * h_ij. So a
       // row needs one spare slot; once the row is full the last slot is overwritten and the
@@ -133,7 +173,10 @@ void buildList(const double* x, const double* z, const double* h, const double* 
       }
       count[i] = cnt;
       if (cnt > last) {  // no spare slot: redone with a wider row
-        overflow = 1;
+        if (half)
+          fullNeed = std::max(fullNeed, cnt);
+        else
+          overflow = 1;
         continue;
       }
       // Pass 2: W_ij of the kept pairs (the Gaussian's came with the scan), then the sorted
@@ -156,8 +199,18 @@ void buildList(const double* x, const double* z, const double* h, const double* 
         }
       }
       if constexpr (Density) rho[i] = sum;
+      if (half) {
+        count[i] = copyHalfRow(slot, cnt, index + base, capacity, i, nReal, reach);
+        if (count[i] > capacity) overflow = 1;
+      }
     }
   }
+    if (fullNeed > 0) {
+      // A full row did not fit the scratch row (its count only was found): all scratch rows
+      // wider, and the build redone (the list's rows are laid out as before).
+      list.scanStride = static_cast<std::size_t>(fullNeed + fullNeed / 4 + 4);
+      if (!overflow) continue;
+    }
     if (!overflow) return;
     // Compression (or a ghost-rich corner) filled a row: lay the rows out again, every row at
     // least a quarter + 4 above its count just found, and redo. A row's capacity never

@@ -38,8 +38,14 @@ struct Rates {
 using ForcePass = void (*)(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
                            const MonaghanViscosity& visc, const AxisCorrection* axis,
                            const RingScale* ring, const Rates& out);
+//! `half`: the pass for half rows (NeighbourList::half; planar Gaussian lanes only, see
+//! halfListsAvailable; null otherwise): each pair evaluated once, both ends' terms added in a
+//! fixed block order (passes.cpp), so the rates differ from the full rows' only by round-off
+//! and do not depend on the thread count.
 ForcePass selectForcePass(cases::Kernel kernel, bool rz, bool viscous, bool compatible,
-                          bool cached);
+                          bool cached, bool half = false);
+//! Whether half rows have their passes: Gaussian kernel, planar, lanes of AVX2 or AVX-512.
+bool halfListsAvailable(cases::Kernel kernel, bool rz);
 
 //! The compatible energy's time-discrete remainder (docs/sph.md, "Energy"): with
 //! da = a^{n+1/2} - a^n per point (ghosts mirrored), subtracts from de (the half-state rate)
@@ -58,7 +64,8 @@ using RemainderPass = void (*)(const PairArrays& a, std::size_t nReal, const Nei
                                const MonaghanViscosity& visc, const double* dax,
                                const double* daz, const double* hoopAx, double halfDt,
                                double* de);
-RemainderPass selectRemainderPass(cases::Kernel kernel, bool rz, bool viscous);
+RemainderPass selectRemainderPass(cases::Kernel kernel, bool rz, bool viscous,
+                                  bool half = false);
 
 //! r-z predictor (docs/sph-rz.md, "Density"): adds to rho_i the change of the summation
 //! density through the ring weights alone, sum_j dmu_j W_ij over i's own object (j = i

@@ -48,9 +48,25 @@ struct NeighbourList {
   //! The points never move while the list is used (the mass iteration): a new list's rows are
   //! sized to the longest row exactly instead of with room for compression.
   bool fixedPoints = false;
+  //! Half rows (the stepper's planar lane passes, docs/performance.md): row i lists only its
+  //! neighbours j > i (every ghost, and each real pair once), in the full row's order, and
+  //! the capacities follow these counts. Not with cacheW.
+  bool half = false;
+  //! Half rows: the capacity of the build's scratch row, which holds a whole row.
+  std::size_t scanStride = 0;
   std::vector<int> count;
   std::vector<int> index;
   std::vector<double> w;  //!< empty without cacheW
+  //! Half rows: per row the largest real neighbour index + 1 (i + 1 if none), which bounds
+  //! where a block of rows adds its pairs' other ends.
+  std::vector<int> reach;
+  //! Half rows: the passes' accumulators for the other ends beyond a block (work space, kept
+  //! between steps so that the step loop does not allocate).
+  mutable std::vector<std::vector<double>> spill;
+  mutable std::vector<std::size_t> spillSpan;  //!< per block: the other ends past it it reaches
+  mutable std::vector<std::vector<int>> farJ;      //!< per block: other ends beyond the spill
+  mutable std::vector<std::vector<double>> farV;   //!< and their terms
+  mutable std::vector<double> sums;
 };
 
 //! Brute-force-checkable entry point: lists, for the first `nReal` of `n` points, every other

@@ -94,6 +94,8 @@ class Stepper {
   [[nodiscard]] std::size_t ghostCount() const;
   [[nodiscard]] ParticleSystem particles() const;       //!< copy of the real particles' state
   [[nodiscard]] StrengthFields strengthFields() const;  //!< empty without strength
+  //! The step's list: half rows (NeighbourList::half: each real pair once, in the row of its
+  //! lower index) in planar Gaussian runs without strength on AVX2 / AVX-512, else full rows.
   [[nodiscard]] const NeighbourList& neighbours() const;
   [[nodiscard]] const StepperConfig& config() const;
   //! Integrals over the particles in the domain plus what left through outflow sides, so that
