@@ -17,6 +17,7 @@
 #include "strength_step.hpp"
 
 namespace hvi::tvd {
+
 std::vector<double>& TvdSolver::phaseStrengthStateForTesting(int p, int k) {
   if (!strength_ || p < 0 || p >= static_cast<int>(strength_->phases.size()) ||
       !strength_->phases[static_cast<std::size_t>(p)].solid || k < 0 ||

@@ -49,7 +49,7 @@ struct StrengthState {
     std::array<std::vector<double>, kStrengthFields> rq;
   };
   std::vector<Phase> phases;
-  //! Effect fracture (docs/strength.md, "TVD", Fracture): rq[kDamage] exists (single material,
+  //! Effect fracture (docs/strength.md, "TVD fracture"): rq[kDamage] exists (single material,
   //! or each solid phase's); per material (phase) its spall strength (-1: a fluid, or a material
   //! the single-material run does not use: no limit) and the density below which it counts as
   //! torn (kStrengthDensityFraction rho0), for the sweeps.
@@ -143,8 +143,8 @@ inline StrengthFaceFlux strengthFaceFlux(const StrengthState& st, const Strength
   return axis == 0 ? Flux{sxx, sxz, sxx * u + sxz * w} : Flux{sxz, szz, sxz * u + szz * w};
 }
 
-//! Effect fracture inside the sweeps' EOS calls (docs/strength.md, "TVD with interfaces",
-//! Fracture): a solid phase's pressure becomes strength::effectivePressure(P, D, spall), as SPH
+//! Effect fracture inside the sweeps' EOS calls (docs/strength.md, "TVD fracture"):
+//! a solid phase's pressure becomes strength::effectivePressure(P, D, spall), as SPH
 //! applies it after every EOS evaluation; below kStrengthDensityFraction rho0 (`intact` false:
 //! torn material, which the failure rule has met on the way there) it carries no tension at all.
 //! Capped, the pressure no longer follows the state (both derivatives 0, as the EOS's own

@@ -137,7 +137,7 @@ void TvdSolver::sweep(int direction, double dt) {
   ctx.contactIterations = options_.contactIterations;
   ctx.dt = dt;
   ctx.axis = xdir ? 0 : 1;
-  // Effect fracture (docs/strength.md, "TVD", Fracture): per line the damage at the sweep's
+  // Effect fracture (docs/strength.md, "TVD fracture"): per line the damage at the sweep's
   // start; the four-line batches do not carry it, so its lines go through the line kernel.
   const bool fracture = strength_ && strength_->fracture;
   if (fracture) {

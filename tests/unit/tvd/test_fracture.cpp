@@ -1,6 +1,6 @@
-//! @file TVD fracture with conservative interfaces (docs/strength.md, "TVD with interfaces",
-//! Fracture): spall where the release waves meet, mass and energy with failed material in the
-//! flow, restart bit for bit with the damage, and what stays refused.
+//! @file TVD fracture (docs/strength.md, "TVD fracture"): spall where the release waves meet,
+//! mass and energy with failed material in the flow (conservative interfaces), restart bit for
+//! bit with the damage, and nothing of it without the effect.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -51,7 +51,7 @@ cases::Scene fractureScene(double xmin, double xmax, double zmin, double zmax, d
 // exceeds the spall strength a little before the two fully overlap. (The same scene with the
 // conservative interfaces, flyer and target two phases, does not spall there: its tension at
 // the meeting plane reaches a pressure of 0.6-0.75 GPa only, with fracture or without, and the
-// target fails at the contact instead; docs/strength.md, "TVD with interfaces", Fracture.)
+// target fails at the contact instead; docs/strength.md, "TVD fracture", Open.)
 struct Spall {
   int failed = 0;
   double meanDepth = 0.0, spread = 0.0, energyDrift = 0.0, massDrift = 0.0, dMax = 0.0;
