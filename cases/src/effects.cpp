@@ -28,7 +28,8 @@ constexpr std::array kSph{Effect::ArtificialViscosity, Effect::TensionCutoff,
                           Effect::Strength,            Effect::Fracture};
 constexpr std::array kTvd{Effect::TensionCutoff,    Effect::MaterialInterfaces,
                           Effect::PhaseBookkeeping, Effect::EnergyBudget,
-                          Effect::Features,         Effect::Strength};
+                          Effect::Features,         Effect::Strength,
+                          Effect::Fracture};
 constexpr std::array kRiemann{Effect::EnergyBudget};  // the exact solution has no physics to add
 }  // namespace
 

@@ -33,9 +33,9 @@ std::vector<std::string> strengthEffects(cases::SolverKind solver) {
   // Looked up by name so that this file builds whichever effects the solver has: every shield
   // scene asks for each one its solver supports.
   std::vector<std::string> on;
-  // TVD carries strength with marker lines in its conservative interface mode (the shield
-  // scenes' default) but not fracture (docs/strength.md, "TVD with interfaces"): its shield
-  // scenes get `strength` alone and keep the zero tension cut-off.
+  // TVD carries strength and fracture per phase with marker lines in its conservative interface
+  // mode (the shield scenes' default; docs/strength.md, "TVD with interfaces"): its shield scenes
+  // get both, as SPH's do.
   for (const char* name : {"strength", "fracture"}) {
     const auto e = cases::effectFromString(name);
     if (e && cases::supports(solver, *e)) on.emplace_back(name);

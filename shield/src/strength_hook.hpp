@@ -10,7 +10,7 @@
 namespace hvi::shield::detail {
 
 //! The effects `strength` and `fracture`, each when the effect table knows it and `solver`
-//! supports it (SPH: both; TVD: strength alone).
+//! supports it (both solvers have both; TVD in its conservative interface mode).
 std::vector<std::string> strengthEffects(cases::SolverKind solver);
 
 //! Lines added to [materials.<name>] of `m` when strength is on: the material's strength and

@@ -15,14 +15,17 @@ namespace hvi::tvd {
 namespace {
 
 constexpr std::uint64_t kMagic = 0x31304456544956ULL;  // "VITVD01" little-endian tag
-// 6 (written with the effect strength or the cut-cell mode; a whole-cell scene without strength
+// 7 (written with the effect fracture only; every other scene writes exactly what it wrote
+// before): as 6, and a fracture flag after the strength flag, and each solid phase's rho_p D after
+// its four strength arrays; 6 (written with the effect strength or the cut-cell mode; a whole-cell scene without strength
 // still writes 4, unchanged): as 5, and every phase's outflow mass after the orphan count
 // (phaseOutflowMass); 5 (read too): a
 // strength flag after the interface-mode flag and rho times the deviator and the plastic strain
 // at the end; 4: an interface-mode flag after the markers flag, and the cut-cell phases after the
 // marker lines; 3 (read too): the outflow budget after the ledger (Ledger::outflow); 2 (read too)
 // had none, its boundary budget held the outflow sides and the walls together.
-constexpr std::uint32_t kVersion = 6;
+constexpr std::uint32_t kVersion = 7;
+constexpr std::uint32_t kVersionWithoutFracture = 6;
 constexpr std::uint32_t kVersionWithoutStrength = 4;
 
 void putBudget(BinaryWriter& w, const Budget& b) {
@@ -51,13 +54,15 @@ void TvdSolver::writeCheckpoint(std::ostream& out) const {
   BinaryWriter w(out, "tvd checkpoint");
   w.value(kMagic);
   const bool flagged = strength_ || cut_;  // version 6: the strength flag is written
-  w.value(flagged ? kVersion : kVersionWithoutStrength);
+  const bool fracture = strength_ && strength_->fracture;
+  w.value(fracture ? kVersion : (flagged ? kVersionWithoutFracture : kVersionWithoutStrength));
   w.value<std::int32_t>(grid_.nx);
   w.value<std::int32_t>(grid_.nz);
   w.value<std::int32_t>(geometry_ == Geometry::Axisymmetric ? 1 : 0);
   w.value<std::int32_t>(markersOn_ ? 1 : 0);
   w.value<std::int32_t>(cut_ ? 1 : 0);
   if (flagged) w.value<std::int32_t>(strength_ ? 1 : 0);
+  if (fracture) w.value<std::int32_t>(1);
   w.value(time_);
   w.value(dt0_);
   w.value<std::int64_t>(step_);
@@ -85,9 +90,11 @@ void TvdSolver::writeCheckpoint(std::ostream& out) const {
   if (strength_ && cut_) {  // each solid phase's rho_p q (its strength state)
     for (const auto& ph : strength_->phases)
       if (ph.solid)
-        for (const auto& a : ph.rq) w.array(a);
+        for (const auto& a : ph.rq)
+          if (!a.empty()) w.array(a);  // the damage with fracture only
   } else if (strength_) {
-    for (const auto& a : strength_->rq) w.array(a);
+    for (const auto& a : strength_->rq)
+      if (!a.empty()) w.array(a);
   }
 }
 
@@ -107,6 +114,12 @@ void TvdSolver::readCheckpoint(std::istream& in) {
     throw InputError(
         fmt::format("tvd checkpoint: written {} the effect strength, this scene runs {} it",
                     withStrength == 1 ? "with" : "without", strength_ ? "with" : "without"));
+  const auto withFracture = version >= 7 ? r.value<std::int32_t>() : 0;
+  const bool fracture = strength_ && strength_->fracture;
+  if ((withFracture == 1) != fracture)
+    throw InputError(
+        fmt::format("tvd checkpoint: written {} the effect fracture, this scene runs {} it",
+                    withFracture == 1 ? "with" : "without", fracture ? "with" : "without"));
   if (nx != grid_.nx || nz != grid_.nz || (rz == 1) != (geometry_ == Geometry::Axisymmetric) ||
       (markers == 1) != markersOn_ || (cut == 1) != cut_)
     throw InputError(fmt::format(
@@ -162,12 +175,13 @@ void TvdSolver::readCheckpoint(std::istream& in) {
   }
   if (strength_) {
     const char* names[detail::kStrengthFields] = {"rho s_xx", "rho s_zz", "rho s_xz",
-                                                  "rho plastic strain"};
+                                                  "rho plastic strain", "rho damage"};
     if (cut_) {
       // In place: Phases::carried points at these arrays.
       for (auto& ph : strength_->phases)
         if (ph.solid)
           for (int k = 0; k < detail::kStrengthFields; ++k) {
+            if (ph.rq[static_cast<std::size_t>(k)].empty()) continue;  // no fracture
             std::vector<double> a;
             r.array(a, n, std::string("phase ") + names[k]);
             ph.rq[static_cast<std::size_t>(k)] = std::move(a);
@@ -175,7 +189,8 @@ void TvdSolver::readCheckpoint(std::istream& in) {
     } else {
       std::array<std::vector<double>, detail::kStrengthFields> rq;
       for (int k = 0; k < detail::kStrengthFields; ++k)
-        r.array(rq[static_cast<std::size_t>(k)], n, names[k]);
+        if (!strength_->rq[static_cast<std::size_t>(k)].empty())  // the damage: with fracture
+          r.array(rq[static_cast<std::size_t>(k)], n, names[k]);
       strength_->rq = std::move(rq);
     }
   }

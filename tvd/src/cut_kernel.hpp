@@ -15,6 +15,7 @@
 #include "hvi/tvd/phases.hpp"
 #include "hvi/tvd/relaxation.hpp"
 #include "line_kernel.hpp"
+#include "strength_step.hpp"
 
 namespace hvi::tvd::detail {
 
@@ -195,6 +196,8 @@ class CutLineSolver {
     const auto& V = first ? ph.q0 : ph.q1;
     const auto& S = first ? ph.vol0 : ph.vol1;
     const int nb = n_ + 4;
+    const double spall = C_.spall != nullptr ? C_.spall[p] : -1.0;
+    const bool fracture = spall >= 0.0;
     std::visit(
         [&](const auto& eos) {
           // The occupied span and one cell either side (the faces around it check them).
@@ -216,6 +219,9 @@ class CutLineSolver {
               continue;
             }
             ph.cs[j] = cellState(eos, r, ph.U[kMn][j], ph.U[kMt][j], ph.U[kE][j]);
+            // Effect fracture: the phase's tension limited where the pressure enters the
+            // fluxes, the characteristic split and the interface exchange.
+            if (fracture) limitTension(ph.cs[j], ph.damage[j], spall, r >= C_.rhoIntact[p]);
             ph.sqrtRho[j] = std::sqrt(r);
             physicalFlux(ph.U[kMn][j], ph.U[kMt][j], ph.U[kE][j], ph.cs[j], ph.F[j].data());
           }

@@ -40,6 +40,9 @@ struct PhaseLine {
   // strength state's advection takes the phase's mass fluxes from them (strength_step.hpp).
   std::vector<double> massOld;
   double edgeMass = 0.0;
+  // Effect fracture: the phase's damage D per buffer cell at the sweep's start (ghosts
+  // included), which scales its tension in every EOS call of the sweep (limitTension).
+  std::vector<double> damage;
 };
 
 //! All phases of one line, plus the line's geometry (as LineWork).

@@ -8,6 +8,7 @@
 #include "hvi/tvd/harten_yee.hpp"
 #include "hvi/tvd/limiter.hpp"
 #include "line_work.hpp"
+#include "strength_step.hpp"
 
 namespace hvi::tvd::detail {
 
@@ -102,6 +103,19 @@ class LineSolver {
     const int nb = n_ + 4;
     primitiveStates(*C_.materials, C_.singleMaterial, Markers ? W_.mat.data() : nullptr, 0, nb,
                     V[kRho].data(), V[kMn].data(), V[kMt].data(), V[kE].data(), W_.cs.data());
+    // Effect fracture (one material): its tension limited where the pressure enters the fluxes.
+    // A cell beside one below the intact density along the line (vacuum, a free surface's partly
+    // filled cell, torn material) carries none: without marker lines the partly filled cell of a
+    // free surface reads as stretched solid, and would pull its neighbour across the surface.
+    if (!Markers && C_.spall != nullptr) {
+      const double spall = C_.spall[C_.singleMaterial];
+      const double intact = C_.rhoIntact[C_.singleMaterial];
+      const double* r = V[kRho].data();
+      for (int j = 0; j < nb; ++j)
+        limitTension(W_.cs[j], W_.damage[j], spall,
+                     r[j] >= intact && (j == 0 || r[j - 1] >= intact) &&
+                         (j == nb - 1 || r[j + 1] >= intact));
+    }
     const CellState* cs = W_.cs.data();
     for (int j = 0; j < nb; ++j) {
       if (isVacuum(j)) continue;

@@ -61,6 +61,8 @@ struct LineWork {
   // Geometry of the line: face area and inverse cell volume (line units), radial source 1/r.
   std::vector<double> area, invVol, invR;
   std::vector<double> pface;  // r-z radial lines: Riemann pressure at each face
+  // Effect fracture (single material): the damage D per buffer cell at the sweep's start.
+  std::vector<double> damage;
 };
 
 //! Constant for every line of one sweep.
@@ -75,6 +77,10 @@ struct SweepContext {
   double h = 0.0;  //!< cell size (cut-cell merging compares a cell's volume with its faces)
   int axis = 0;  //!< the lines run along x (0) or z (1): where the budgets book kMn and kMt
   bool keepColdStates = false;  //!< cut-cell mode: Options::keepColdStates
+  //! Effect fracture, cut-cell mode (null without it): per phase its spall strength (Mbar; < 0
+  //! for a phase without fracture, a fluid) and the density below which it is torn (no tension).
+  const double* spall = nullptr;
+  const double* rhoIntact = nullptr;
 };
 
 //! One line: `n` cells loaded at buffer positions 2..n+1.

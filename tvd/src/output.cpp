@@ -21,6 +21,9 @@ Snapshot TvdSolver::snapshot() const {
   Field mat = makeField(Quantity::Material, geometry_, n, -1.0);
   Field obj = makeField(Quantity::Object, geometry_, n, -1.0);
 
+  // Effect fracture: per material (phase) its spall strength, < 0 for a fluid.
+  const double* fractureSpall =
+      strength_ && strength_->fracture ? strength_->spall.data() : nullptr;
   for (int id = 0; id < static_cast<int>(materials_.size()); ++id) {
     if (!markersOn_ && id != singleMaterial_) continue;
     std::visit(
@@ -42,7 +45,14 @@ Snapshot TvdSolver::snapshot() const {
             const Conserved& q = cut_ ? phases_.q[static_cast<std::size_t>(id)] : U_;
             const double r = q.rho[cc] / a;
             if (!(r > 0.0)) continue;
-            const CellState st = detail::cellState(eos, r, q.mx[cc] / a, q.mz[cc] / a, q.E[cc] / a);
+            CellState st = detail::cellState(eos, r, q.mx[cc] / a, q.mz[cc] / a, q.E[cc] / a);
+            // Effect fracture: the pressure the sweeps see (tension limited, scaled by 1 - D).
+            if (fractureSpall != nullptr && fractureSpall[id] >= 0.0) {
+              const auto& rd = cut_ ? strength_->phases[static_cast<std::size_t>(id)].rq
+                                    : strength_->rq;
+              detail::limitTension(st, rd[detail::kDamage][cc] / q.rho[cc], fractureSpall[id],
+                                   r >= strength_->rhoIntact[static_cast<std::size_t>(id)]);
+            }
             rho.data[cc] = r;
             p.data[cc] = st.p;
             v.data[2 * cc] = st.u;
@@ -83,7 +93,8 @@ Snapshot TvdSolver::snapshot() const {
     // temperature model's T; 0 in vacuum cells and for a fluid.
     const detail::StrengthState& st = *strength_;
     std::vector<double> sxx(n, 0.0), szz(n, 0.0), sxz(n, 0.0), stt(n, 0.0), eps(n, 0.0),
-        temp(n, 0.0);
+        temp(n, 0.0), dmg;
+    if (st.fracture) dmg.assign(n, 0.0);
     const double rc = rhoCut_[static_cast<std::size_t>(singleMaterial_)];
     // Conservative interfaces: the owning phase's own values (as the other fields report its own
     // state on its part of the cell).
@@ -99,6 +110,7 @@ Snapshot TvdSolver::snapshot() const {
       sxz[c] = ph.rq[detail::kSxz][c] / m;
       stt[c] = -(sxx[c] + szz[c]);
       eps[c] = ph.rq[detail::kEps][c] / m;
+      if (st.fracture) dmg[c] = ph.rq[detail::kDamage][c] / m;
       const double es = (q.E[c] - 0.5 * (q.mx[c] * q.mx[c] + q.mz[c] * q.mz[c]) / m) / m;
       temp[c] = ph.material.thermal.temperature(m / a / ph.rho0, es);
     }
@@ -110,6 +122,7 @@ Snapshot TvdSolver::snapshot() const {
       sxz[c] = st.rq[detail::kSxz][c] / r;
       stt[c] = -(sxx[c] + szz[c]);
       eps[c] = st.rq[detail::kEps][c] / r;
+      if (st.fracture) dmg[c] = st.rq[detail::kDamage][c] / r;
       const double es = (U_.E[c] - 0.5 * (U_.mx[c] * U_.mx[c] + U_.mz[c] * U_.mz[c]) / r) / r;
       if (st.solid) temp[c] = st.material.thermal.temperature(r / st.rho0, es);
     }
@@ -122,6 +135,7 @@ Snapshot TvdSolver::snapshot() const {
     add("stress_deviator_tt", units::pressureName, stt);
     add("plastic_strain", "1", eps);
     add("temperature", "K", temp);
+    if (st.fracture) add("damage", "1", dmg);
   }
   for (const auto& m : sceneMaterials_) s.materialNames.push_back(m.name);
   if (markersOn_) {

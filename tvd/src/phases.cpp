@@ -17,7 +17,7 @@ PhaseLine::PhaseLine(int capacity) {
   for (auto* a : {&q0, &q1, &w, &ex, &U})
     for (auto& v : *a) v.assign(nb, 0.0);
   for (auto* v :
-       {&alpha, &vol0, &vol1, &volW, &gm, &gp, &ap, &uL, &uR, &It, &sqrtRho, &pface, &massOld})
+       {&alpha, &vol0, &vol1, &volW, &gm, &gp, &ap, &uL, &uR, &It, &sqrtRho, &pface, &massOld, &damage})
     v->assign(nb, 0.0);
   present.assign(nb, 0);
   dry.assign(nb, 0);

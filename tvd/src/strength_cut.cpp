@@ -21,7 +21,8 @@ namespace hvi::tvd {
 std::vector<double>& TvdSolver::phaseStrengthStateForTesting(int p, int k) {
   if (!strength_ || p < 0 || p >= static_cast<int>(strength_->phases.size()) ||
       !strength_->phases[static_cast<std::size_t>(p)].solid || k < 0 ||
-      k >= detail::kStrengthFields)
+      k >= detail::kStrengthFields ||
+      strength_->phases[static_cast<std::size_t>(p)].rq[static_cast<std::size_t>(k)].empty())
     throw std::logic_error(fmt::format("tvd: no strength state of phase {} component {}", p, k));
   return strength_->phases[static_cast<std::size_t>(p)].rq[static_cast<std::size_t>(k)];
 }
@@ -64,6 +65,7 @@ void TvdSolver::strengthStepCut(double dt) {
   const double h = grid_.dx;
   const bool rz = geometry_ == Geometry::Axisymmetric;
   const int P = phases_.count;
+  const bool fracture = st.fracture;
   const auto& bnd = domain_.boundary;  // xmin, xmax, zmin, zmax
   const detail::StrengthSides reflect = {
       bnd[0] != cases::Boundary::Outflow, bnd[1] != cases::Boundary::Outflow,
@@ -120,13 +122,30 @@ void TvdSolver::strengthStepCut(double dt) {
             if (!st.live[cc] || !livePhase(p, cc)) {
               for (int k = detail::kSxx; k <= detail::kSxz; ++k)
                 ph.rq[static_cast<std::size_t>(k)][cc] = 0.0;
+              // Effect fracture: the failure rule holds in a cell without stress too (a solid
+              // at its own density in a partly filled cell); below that density the sweeps
+              // carry no tension anyway.
+              if (fracture && livePhase(p, cc)) {
+                const double m = q.rho[cc];
+                const double vx = q.mx[cc] / m, vz = q.mz[cc] / m;
+                const double e = q.E[cc] / m - 0.5 * (vx * vx + vz * vz);
+                if (eos.state(m / alpha[cc], e).pressure < -sm.spallStrength)
+                  ph.rq[detail::kDamage][cc] = m;
+              }
               continue;
             }
             const double m = q.rho[cc], a = alpha[cc];
             const double r = m / a;
             const double vx = q.mx[cc] / m, vz = q.mz[cc] / m;
             const double e = q.E[cc] / m - 0.5 * (vx * vx + vz * vz);
-            const double pr = eos.state(r, e).pressure;
+            const eos::EosState es = eos.state(r, e);
+            // Effect fracture: the pressure the sweeps saw (tension limited by the spall
+            // strength and scaled by 1 - D), and the yield scaled by 1 - D.
+            const double d =
+                fracture ? std::clamp(ph.rq[detail::kDamage][cc] / m, 0.0, 1.0) : 0.0;
+            const double pr =
+                fracture ? strength::effectivePressure(es.pressure, d, sm.spallStrength)
+                         : es.pressure;
             const double eta = r / ph.rho0;
             const double temp = sm.thermal.temperature(eta, e);
             const double G = strength::shearModulus(sm, pr, temp, eta);
@@ -143,13 +162,23 @@ void TvdSolver::strengthStepCut(double dt) {
             s.xx += dt * rate.xx;
             s.zz += dt * rate.zz;
             s.xz += dt * rate.xz;
-            const double y = strength::yieldStress(
-                sm.yield, {eps, strength::equivalentStrainRate(g), pr, temp, eta});
-            eps += strength::radialReturn(s, y, G).plasticStrain;
+            const strength::YieldInput in{eps, strength::equivalentStrainRate(g), pr, temp, eta};
+            const double y = strength::yieldStress(sm.yield, in);
+            const strength::ReturnResult rr =
+                strength::radialReturn(s, fracture ? (1.0 - d) * y : y, G);
+            eps += rr.plasticStrain;
             ph.rq[detail::kSxx][cc] = m * s.xx;
             ph.rq[detail::kSzz][cc] = m * s.zz;
             ph.rq[detail::kSxz][cc] = m * s.xz;
             ph.rq[detail::kEps][cc] = m * eps;
+            // Effect fracture at the step's end: tension of the EOS beyond the spall strength
+            // fails the phase outright (D = 1, the hydrocodes' pressure cut-off spall, as SPH);
+            // else its damage model grows D.
+            if (fracture && d < 1.0)
+              ph.rq[detail::kDamage][cc] =
+                  m * (es.pressure < -sm.spallStrength
+                           ? 1.0
+                           : detail::grownDamage(sm, d, dt, pr, r, es.soundSpeed, G, h, in, s, rr));
             st.s[0][cc] += a * s.xx;
             st.s[1][cc] += a * s.zz;
             st.s[2][cc] += a * s.xz;

@@ -30,6 +30,38 @@ double minmod(double a, double b) {
 }
 }  // namespace
 
+// Effect fracture: damage growth over a step by the phase's damage model, as SPH grows it
+// (sph/src/strength_pass.cpp, growDamage; docs/strength.md "SPH with strength", Fracture):
+// Grady-Kipp tensile damage as in Benz and Asphaug (1995), deterministic per cell, with the
+// cell's size h in place of the particle spacing (volume h^3, radius h / 2), or Johnson and
+// Cook's (1985) failure strain. `p` is the effective pressure, `s` the deviator after the
+// return, `c` the EOS's bulk sound speed.
+double grownDamage(const strength::Material& sm, double d, double dt, double p, double rho,
+                   double c, double g, double h, const strength::YieldInput& in,
+                   const strength::Deviator& s, const strength::ReturnResult& rr) {
+  if (const auto* gk = std::get_if<strength::GradyKipp>(&sm.damage)) {
+    const double sigma1 = strength::maxPrincipalStress(s, p);
+    if (sigma1 <= 0.0) return d;
+    const double e = strength::youngsModulus(rho * c * c, g);
+    const double eps = sigma1 / (std::max(1.0 - d, 1e-12) * e);
+    if (eps < gk->activationStrain(h * h * h)) return d;
+    const double cL = strength::longitudinalSoundSpeed(c, g, rho);
+    return strength::GradyKipp::grow(d, dt, gk->crackSpeed * cL, 0.5 * h);
+  }
+  if (const auto* jc = std::get_if<strength::JohnsonCookFailure>(&sm.damage)) {
+    if (rr.plasticStrain <= 0.0) return d;
+    const double seq = strength::vonMises(s);
+    const double triax = seq > 0.0 ? -p / seq : 0.0;
+    double th = 0.0;
+    if (const auto* law = std::get_if<strength::JohnsonCook>(&sm.yield))
+      th = law->homologous(in.temperature);
+    const double ef = jc->failureStrain(triax, in.strainRate, th);
+    return ef > 0.0 ? std::min(d + rr.plasticStrain / ef, 1.0) : 1.0;
+  }
+  return d;
+}
+
+
 void advectStrengthLine(StrengthState& st, StrengthLineWork& sw, const LineWork& w, int n,
                         double edgeMassLow, double rhoCut) {
   advectStrengthLine(st, sw, w.u0[kRho].data(), w.invVol.data(), n, edgeMassLow, rhoCut);
@@ -50,6 +82,7 @@ void advectStrengthLine(std::array<std::vector<double>, kStrengthFields>& rqs, S
     G[j] = G[j - 1] - (rhoNew[j] - sw.rhoOld[static_cast<std::size_t>(j)]) / invVol[j];
   double* q = sw.q.data();
   for (auto& rq : rqs) {
+    if (rq.empty()) continue;  // the damage without fracture
     for (int j = 2; j <= n + 1; ++j) {
       const double r = sw.rhoOld[static_cast<std::size_t>(j)];
       q[j] = r >= rhoCut ? rq[static_cast<std::size_t>(cells[j])] / r : 0.0;
@@ -85,10 +118,11 @@ void advectStrengthLine(std::array<std::vector<double>, kStrengthFields>& rqs, S
 }  // namespace detail
 
 void TvdSolver::setUpStrength(const cases::Scene& scene) {
-  if (scene.has(cases::Effect::Fracture))
+  const bool fracture = scene.has(cases::Effect::Fracture);
+  if (fracture && !scene.has(cases::Effect::Strength))
     throw InputError(
-        "tvd: effect 'fracture' is not implemented in the TVD solver (docs/strength.md, TVD, "
-        "open); it runs with 'strength' alone");
+        "tvd: effect 'fracture' needs 'strength' (it removes the tensile and shear strength that "
+        "'strength' gives)");
   if (!scene.has(cases::Effect::Strength)) return;
   if (markersOn_ && !cut_)
     throw InputError(
@@ -108,9 +142,19 @@ void TvdSolver::setUpStrength(const cases::Scene& scene) {
       if (!ph.solid) continue;
       anySolid = true;
       ph.material = *materials_[p].strength;
-      for (auto& a : ph.rq) a.assign(n, 0.0);  // bodies start unstressed
+      for (int k = 0; k < detail::kStrengthFieldsWithoutDamage; ++k)
+        ph.rq[static_cast<std::size_t>(k)].assign(n, 0.0);  // bodies start unstressed
+      if (fracture) ph.rq[detail::kDamage].assign(n, 0.0);   // and intact
     }
     st->solid = anySolid;
+    st->fracture = fracture;
+    if (fracture) {
+      for (std::size_t p = 0; p < materials_.size(); ++p) {
+        const detail::StrengthState::Phase& ph = st->phases[p];
+        st->spall.push_back(ph.solid ? ph.material.spallStrength : -1.0);
+        st->rhoIntact.push_back(kStrengthDensityFraction * ph.rho0);
+      }
+    }
     st->u.assign(n, 0.0);
     st->w.assign(n, 0.0);
     st->live.assign(n, 0);
@@ -121,7 +165,8 @@ void TvdSolver::setUpStrength(const cases::Scene& scene) {
     phases_.carried.assign(materials_.size(), {});
     for (std::size_t p = 0; p < materials_.size(); ++p)
       if (strength_->phases[p].solid)
-        for (auto& a : strength_->phases[p].rq) phases_.carried[p].push_back(&a);
+        for (auto& a : strength_->phases[p].rq)
+          if (!a.empty()) phases_.carried[p].push_back(&a);
     for (auto& w : work_)
       w->strength = std::make_unique<detail::StrengthLineWork>(std::max(grid_.nx, grid_.nz));
     return;
@@ -132,7 +177,16 @@ void TvdSolver::setUpStrength(const cases::Scene& scene) {
   if (st->solid) st->material = *m.strength;
   st->rho0 = m.rho0();
   const auto n = static_cast<std::size_t>(grid_.cells());
-  for (auto& a : st->rq) a.assign(n, 0.0);  // bodies start unstressed
+  for (int k = 0; k < detail::kStrengthFieldsWithoutDamage; ++k)
+    st->rq[static_cast<std::size_t>(k)].assign(n, 0.0);  // bodies start unstressed
+  if (fracture && st->solid) {  // and intact; the sweeps read the material's entries
+    st->fracture = true;
+    st->rq[detail::kDamage].assign(n, 0.0);
+    st->spall.assign(materials_.size(), -1.0);
+    st->rhoIntact.assign(materials_.size(), 0.0);
+    st->spall[static_cast<std::size_t>(singleMaterial_)] = st->material.spallStrength;
+    st->rhoIntact[static_cast<std::size_t>(singleMaterial_)] = kStrengthDensityFraction * st->rho0;
+  }
   st->u.assign(n, 0.0);
   st->w.assign(n, 0.0);
   st->live.assign(n, 0);
@@ -143,7 +197,8 @@ void TvdSolver::setUpStrength(const cases::Scene& scene) {
 }
 
 std::vector<double>& TvdSolver::strengthStateForTesting(int k) {
-  if (!strength_ || k < 0 || k >= detail::kStrengthFields)
+  if (!strength_ || k < 0 || k >= detail::kStrengthFields ||
+      strength_->rq[static_cast<std::size_t>(k)].empty())
     throw std::logic_error("tvd: no strength state component " + std::to_string(k));
   return strength_->rq[static_cast<std::size_t>(k)];
 }
@@ -172,6 +227,7 @@ void TvdSolver::strengthStep(double dt) {
       bnd[0] != cases::Boundary::Outflow, bnd[1] != cases::Boundary::Outflow,
       bnd[2] != cases::Boundary::Outflow, bnd[3] != cases::Boundary::Outflow};
   const strength::Material& sm = st.material;
+  const bool fracture = st.fracture;
 
   // 1. The cell-centred velocity (the state after the sweeps).
 #pragma omp parallel for schedule(static) num_threads(threads_) if (cells >= kParallelCells)
@@ -208,7 +264,14 @@ void TvdSolver::strengthStep(double dt) {
           if (rz) g.hoop = st.u[cc] / cellX_[static_cast<std::size_t>(i)];
           const double r = U_.rho[cc];
           const double e = U_.E[cc] / r - 0.5 * (st.u[cc] * st.u[cc] + st.w[cc] * st.w[cc]);
-          const double p = eos.state(r, e).pressure;
+          const eos::EosState es = eos.state(r, e);
+          // Effect fracture: the pressure the sweeps saw (tension limited by the spall strength
+          // and scaled by 1 - D), and the yield scaled by 1 - D.
+          const double d =
+              fracture ? std::clamp(st.rq[detail::kDamage][cc] / r, 0.0, 1.0) : 0.0;
+          const double p =
+              fracture ? strength::effectivePressure(es.pressure, d, sm.spallStrength)
+                       : es.pressure;
           const double eta = r / st.rho0;
           const double temp = sm.thermal.temperature(eta, e);
           const double G = strength::shearModulus(sm, p, temp, eta);
@@ -219,9 +282,26 @@ void TvdSolver::strengthStep(double dt) {
           s.xx += dt * rate.xx;
           s.zz += dt * rate.zz;
           s.xz += dt * rate.xz;
-          const double y = strength::yieldStress(
-              sm.yield, {eps, strength::equivalentStrainRate(g), p, temp, eta});
-          eps += strength::radialReturn(s, y, G).plasticStrain;
+          const strength::YieldInput in{eps, strength::equivalentStrainRate(g), p, temp, eta};
+          const double y = strength::yieldStress(sm.yield, in);
+          const strength::ReturnResult rr =
+              strength::radialReturn(s, fracture ? (1.0 - d) * y : y, G);
+          eps += rr.plasticStrain;
+          // Effect fracture at the step's end: the failure rule and the damage model (as the
+          // cut-cell step, strength_cut.cpp), in a cell away from free surfaces: one beside a
+          // dead cell is a free surface's partly filled cell, whose EOS tension is its average
+          // with the vacuum (the sweeps give it no tension across the surface either).
+          auto liveAt = [&](int ii, int kk) {
+            return ii < 0 || ii >= nx || kk < 0 || kk >= nz ||
+                   st.live[static_cast<std::size_t>(kk) * static_cast<std::size_t>(nx) +
+                           static_cast<std::size_t>(ii)] != 0;
+          };
+          if (fracture && d < 1.0 && liveAt(i - 1, k) && liveAt(i + 1, k) && liveAt(i, k - 1) &&
+              liveAt(i, k + 1))
+            st.rq[detail::kDamage][cc] =
+                r * (es.pressure < -sm.spallStrength
+                         ? 1.0
+                         : detail::grownDamage(sm, d, dt, p, r, es.soundSpeed, G, h, in, s, rr));
           st.s[0][cc] = s.xx;
           st.s[1][cc] = s.zz;
           st.s[2][cc] = s.xz;

@@ -1,17 +1,30 @@
 //! @file TVD with the effect `strength` (docs/strength.md, "TVD"): the per-cell strength state,
 //! its conservative advection with the mass fluxes of a sweep line, and the strength sub-step.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <vector>
 
 #include "hvi/strength/strength.hpp"
+#include "hvi/tvd/characteristics.hpp"
 #include "line_work.hpp"
 
 namespace hvi::tvd::detail {
 
 //! Strength scalars carried per unit volume (rho q), so that the sweeps advect them with the
-//! mass: the deviator's three stored components and the equivalent plastic strain.
-enum StrengthComponent : int { kSxx = 0, kSzz = 1, kSxz = 2, kEps = 3, kStrengthFields = 4 };
+//! mass: the deviator's three stored components, the equivalent plastic strain and, with the
+//! effect fracture only, the damage D (its array is empty without fracture, and every loop over
+//! the components skips an empty one, so a run without fracture does the same arithmetic).
+enum StrengthComponent : int {
+  kSxx = 0,
+  kSzz = 1,
+  kSxz = 2,
+  kEps = 3,
+  kDamage = 4,
+  kStrengthFields = 5
+};
+//! The components a run without fracture carries (and its checkpoint holds).
+inline constexpr int kStrengthFieldsWithoutDamage = 4;
 
 //! The strength state of a single-material TVD run (exists only when the scene names
 //! `strength`). `rq[k][c]` is rho times the component k of cell c.
@@ -36,6 +49,12 @@ struct StrengthState {
     std::array<std::vector<double>, kStrengthFields> rq;
   };
   std::vector<Phase> phases;
+  //! Effect fracture (docs/strength.md, "TVD fracture"): rq[kDamage] exists (single material,
+  //! or each solid phase's); per material (phase) its spall strength (-1: a fluid, or a material
+  //! the single-material run does not use: no limit) and the density below which it counts as
+  //! torn (kStrengthDensityFraction rho0), for the sweeps.
+  bool fracture = false;
+  std::vector<double> spall, rhoIntact;
   //! Cut-cell scratch: the cell's velocity gradient (dvx/dx, dvx/dz, dvz/dx, dvz/dz, hoop).
   std::array<std::vector<double>, 5> grad;
 };
@@ -123,6 +142,36 @@ inline StrengthFaceFlux strengthFaceFlux(const StrengthState& st, const Strength
   w = 0.5 * (w + st.w[bb]);
   return axis == 0 ? Flux{sxx, sxz, sxx * u + sxz * w} : Flux{sxz, szz, sxz * u + szz * w};
 }
+
+//! Effect fracture inside the sweeps' EOS calls (docs/strength.md, "TVD fracture"):
+//! a solid phase's pressure becomes strength::effectivePressure(P, D, spall), as SPH
+//! applies it after every EOS evaluation; below kStrengthDensityFraction rho0 (`intact` false:
+//! torn material, which the failure rule has met on the way there) it carries no tension at all.
+//! Capped, the pressure no longer follows the state (both derivatives 0, as the EOS's own
+//! cut-off); scaled by 1 - D, so are they. H follows P; the sound speed is the EOS's (it only sets
+//! wave speeds and the face's floor, and never falls below the material's).
+inline void limitTension(CellState& s, double damage, double spall, bool intact) {
+  if (!(s.p < 0.0)) return;
+  const double d = intact ? std::clamp(damage, 0.0, 1.0) : 1.0;
+  const double p = strength::effectivePressure(s.p, d, spall);
+  if (p == s.p) return;
+  if (s.p < -spall || d >= 1.0) {
+    s.prho = 0.0;
+    s.gam = 0.0;
+  } else {
+    s.prho *= 1.0 - d;
+    s.gam *= 1.0 - d;
+  }
+  s.H += (p - s.p) / s.rho;
+  s.p = p;
+}
+
+//! Effect fracture: the damage D after a step of growth dt by the material's damage model
+//! (Grady-Kipp over a cell of size h, Johnson-Cook failure strain), from D at the pressure p
+//! (effective), the deviator s after the return and its result rr (strength_step.cpp).
+double grownDamage(const strength::Material& sm, double d, double dt, double p, double rho,
+                   double c, double g, double h, const strength::YieldInput& in,
+                   const strength::Deviator& s, const strength::ReturnResult& rr);
 
 //! Per-thread scratch of the advection along one line.
 struct StrengthLineWork {

@@ -42,6 +42,7 @@ LineWork::LineWork(int cells) : capacity(cells) {
   invVol.assign(nb, 1.0);
   invR.assign(nb, 0.0);
   pface.assign(nb, 0.0);
+  damage.assign(nb, 0.0);
 }
 
 }  // namespace detail
@@ -136,6 +137,13 @@ void TvdSolver::sweep(int direction, double dt) {
   ctx.contactIterations = options_.contactIterations;
   ctx.dt = dt;
   ctx.axis = xdir ? 0 : 1;
+  // Effect fracture (docs/strength.md, "TVD fracture"): per line the damage at the sweep's
+  // start; the four-line batches do not carry it, so its lines go through the line kernel.
+  const bool fracture = strength_ && strength_->fracture;
+  if (fracture) {
+    ctx.spall = strength_->spall.data();
+    ctx.rhoIntact = strength_->rhoIntact.data();
+  }
   const Side lowSide = detail::sideOf(domain_.boundary[xdir ? 0 : 2]);
   const Side highSide = detail::sideOf(domain_.boundary[xdir ? 1 : 3]);
   // The grid arrays in line components (detail::Component): normal and tangential momentum.
@@ -150,7 +158,7 @@ void TvdSolver::sweep(int direction, double dt) {
   // Single-material planar and r-z axial lines go kB at a time through the batch kernel;
   // lines beyond the last whole batch, and every line otherwise, through LineSolver.
   constexpr int kB = detail::kBatch;
-  const bool batched = options_.lineBatches && !markersOn_ && !radial && N >= 2;
+  const bool batched = options_.lineBatches && !markersOn_ && !radial && N >= 2 && !fracture;
   const int groups = batched ? lines / kB : 0;
   const int items = groups + (lines - groups * kB);
   const cases::Material& material = materials_[static_cast<std::size_t>(singleMaterial_)];
@@ -198,6 +206,16 @@ void TvdSolver::sweep(int direction, double dt) {
         if (pos < 0 || pos >= N) continue;
         const long c = at(pos);
         for (int k = 0; k < 4; ++k) W.u0[k][j] = arrays[k][c];
+      }
+      if (fracture) {  // rho D / rho, the ghosts' from their source cells as their states
+        const double* rd = strength_->rq[detail::kDamage].data();
+        const double rc = rhoCut_[static_cast<std::size_t>(singleMaterial_)];
+        for (int j = 0; j < n + 4; ++j) {
+          bool mirrored = false;
+          const auto c = static_cast<std::size_t>(
+              at(detail::ghostSource(a - 2 + j, N, lowSide, highSide, mirrored)));
+          W.damage[j] = U_.rho[c] >= rc ? rd[c] / U_.rho[c] : 0.0;
+        }
       }
       if (own != nullptr) {
         for (int j = 0; j < n + 4; ++j) {

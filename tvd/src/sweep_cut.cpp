@@ -67,6 +67,11 @@ void TvdSolver::sweepCut(int direction, double dt) {
   ctx.dt = dt;
   ctx.h = h;
   ctx.axis = xdir ? 0 : 1;
+  const bool fracture = strength_ && strength_->fracture;
+  if (fracture) {
+    ctx.spall = strength_->spall.data();
+    ctx.rhoIntact = strength_->rhoIntact.data();
+  }
   const Side lowSide = detail::sideOf(domain_.boundary[xdir ? 0 : 2]);
   const Side highSide = detail::sideOf(domain_.boundary[xdir ? 1 : 3]);
 
@@ -161,6 +166,18 @@ void TvdSolver::sweepCut(int direction, double dt) {
           if (!ghost)
             for (int k = 0; k < 4; ++k) ph.q0[k][j] = arrays[k][c];
           ph.It[j] = cross[0][pos * crossStride] - cross[1][pos * crossStride];
+        }
+        // Effect fracture: the solid phase's damage at the sweep's start (rho_p D / rho_p), the
+        // ghosts' from their source cells as their states.
+        if (fracture && strength_->phases[static_cast<std::size_t>(p)].solid) {
+          const double* rd =
+              strength_->phases[static_cast<std::size_t>(p)].rq[detail::kDamage].data();
+          for (int j = 0; j < n + 4; ++j) {
+            bool mirrored = false;
+            const long c = at(detail::ghostSource(a - 2 + j, N, lowSide, highSide, mirrored));
+            const double m = Q.rho[static_cast<std::size_t>(c)];
+            ph.damage[j] = m > 0.0 ? rd[c] / m : 0.0;
+          }
         }
         // Faces inside the domain straight from the aperture arrays; the boundary faces and
         // those beyond it through `aperture`.

@@ -126,12 +126,13 @@ TEST(ShieldScene, SphPlatesCarryStrengthAndSpall) {
   const auto* y = std::get_if<strength::ConstantYield>(&of("al7075_t6")->strength->yield);
   ASSERT_NE(y, nullptr);
   EXPECT_NEAR(y->y0, 73.0 * kMpaPerKsi * 1e-5, 1e-12);  // MPa -> Mbar
-  // TVD carries strength (conservative interfaces, the default) but not fracture: its shield
-  // scenes name strength, keep the zero cut-off, and give every material its strength table.
+  // TVD carries strength and fracture per phase (conservative interfaces, the default): its
+  // shield scenes name both, drop the zero cut-off, and give every material its strength table
+  // with the spall strength.
   const cases::Scene tvd = buildScene(parseShield(std::string(kTwoWalls), "s.toml"));
   EXPECT_TRUE(tvd.has(cases::Effect::Strength));
-  EXPECT_FALSE(tvd.has(cases::Effect::Fracture));
-  EXPECT_TRUE(tvd.has(cases::Effect::TensionCutoff));
+  EXPECT_TRUE(tvd.has(cases::Effect::Fracture));
+  EXPECT_FALSE(tvd.has(cases::Effect::TensionCutoff));
   EXPECT_EQ(tvd.tvd.interfaces, cases::InterfaceMode::Conservative);
   for (const auto& m : tvd.materials) EXPECT_TRUE(m.strength.has_value()) << m.name;
 }

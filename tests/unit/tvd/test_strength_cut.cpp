@@ -386,7 +386,9 @@ TEST(TvdStrengthCut, ThreadCountDoesNotChangeTheResult) {
             field(b.snapshot(), "stress_deviator_zz").data);
 }
 
-// The whole-cell interfaces and fracture stay refused, naming what to change.
+// The whole-cell interfaces stay refused, with strength and with fracture, naming what to
+// change; fracture with the conservative interfaces runs (tests/unit/tvd/test_fracture.cpp), and
+// a fracture scene with the whole-cell mode is refused as its strength is.
 TEST(TvdStrengthCut, RefusesWhatIsNotBuilt) {
   cases::Scene s = blocks(Geometry::Planar);
   s.tvd.interfaces = cases::InterfaceMode::WholeCell;
@@ -396,8 +398,13 @@ TEST(TvdStrengthCut, RefusesWhatIsNotBuilt) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("conservative"), std::string::npos) << e.what();
   }
-  s = blocks(Geometry::Planar);
+  s.effects.erase(Effect::TensionCutoff);
   s.effects.insert(Effect::Fracture);
+  for (auto& m : s.materials) m.strength->spallStrength = 0.012;
+  EXPECT_THROW(TvdSolver solver(s), InputError);
+  s.tvd.interfaces = cases::InterfaceMode::Conservative;
+  EXPECT_NO_THROW(TvdSolver solver(s));
+  s.effects.erase(Effect::Strength);  // fracture needs strength
   EXPECT_THROW(TvdSolver solver(s), InputError);
   EXPECT_NO_THROW(TvdSolver solver(blocks(Geometry::Planar)));
 }
