@@ -268,36 +268,6 @@ void dispatch(bool rz, bool sw, bool cached, bool pairs, const PairArrays& a, st
                               axis, out, rs, swa);
 }
 
-// Damage growth over a step (effect fracture, docs/strength.md): Grady-Kipp tensile damage as in
-// Benz and Asphaug (1995), deterministic per particle, with the particle's volume dp^3 and
-// radius dp / 2 (dp = h / h_factor, the fill's spacing), or Johnson and Cook's (1985) failure
-// strain.
-template <class Law>
-double growDamage(const strength::Material& sm, const Law& law, double d, double dt, double p,
-                  double rho, double c, double g, double cL, double dp,
-                  const strength::YieldInput& in, const strength::Deviator& s,
-                  const strength::ReturnResult& rr) {
-  if (const auto* gk = std::get_if<strength::GradyKipp>(&sm.damage)) {
-    const double sigma1 = strength::maxPrincipalStress(s, p);
-    if (sigma1 <= 0.0) return d;
-    const double e = strength::youngsModulus(rho * c * c, g);
-    const double eps = sigma1 / (std::max(1.0 - d, 1e-12) * e);
-    if (eps < gk->activationStrain(dp * dp * dp)) return d;
-    return strength::GradyKipp::grow(d, dt, gk->crackSpeed * cL, 0.5 * dp);
-  }
-  if (const auto* jc = std::get_if<strength::JohnsonCookFailure>(&sm.damage)) {
-    if (rr.plasticStrain <= 0.0) return d;
-    const double seq = strength::vonMises(s);
-    const double triax = seq > 0.0 ? -p / seq : 0.0;
-    double th = 0.0;
-    if constexpr (std::is_same_v<Law, strength::JohnsonCook>) th = law.homologous(in.temperature);
-    const double ef = jc->failureStrain(triax, in.strainRate, th);
-    return ef > 0.0 ? std::min(d + rr.plasticStrain / ef, 1.0) : 1.0;
-  }
-  (void)law;
-  return d;
-}
-
 }  // namespace
 
 StrengthModel::StrengthModel(std::vector<std::optional<strength::Material>> solids,
@@ -407,8 +377,8 @@ void StrengthModel::advance(double dt, std::size_t n, const PairArrays& a, const
             if (plasticRateOn_) plasticRate[i] = rr.plasticStrain / dt;
             epsP[i] += rr.plasticStrain;
             if (fracture_ && d < 1.0)
-              damage[i] = growDamage(sm, law, d, dt, a.p[i], a.rho[i], a.c[i], g_[i], cL[i],
-                                     a.h[i] / hFactor_, in, s, rr);
+              damage[i] = strength::grownDamage(sm, d, dt, a.p[i], a.rho[i], a.c[i], g_[i], cL[i],
+                                                a.h[i] / hFactor_, in, s, rr);
           }
         },
         sm.yield);

@@ -176,9 +176,12 @@ void TvdSolver::strengthStepCut(double dt) {
             // else its damage model grows D.
             if (fracture && d < 1.0)
               ph.rq[detail::kDamage][cc] =
-                  m * (es.pressure < -sm.spallStrength
-                           ? 1.0
-                           : detail::grownDamage(sm, d, dt, pr, r, es.soundSpeed, G, h, in, s, rr));
+                  m *
+                  (es.pressure < -sm.spallStrength
+                       ? 1.0
+                       : strength::grownDamage(
+                             sm, d, dt, pr, r, es.soundSpeed, G,
+                             strength::longitudinalSoundSpeed(es.soundSpeed, G, r), h, in, s, rr));
             st.s[0][cc] += a * s.xx;
             st.s[1][cc] += a * s.zz;
             st.s[2][cc] += a * s.xz;

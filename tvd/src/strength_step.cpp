@@ -30,37 +30,6 @@ double minmod(double a, double b) {
 }
 }  // namespace
 
-// Effect fracture: damage growth over a step by the phase's damage model, as SPH grows it
-// (sph/src/strength_pass.cpp, growDamage; docs/strength.md "SPH with strength", Fracture):
-// Grady-Kipp tensile damage as in Benz and Asphaug (1995), deterministic per cell, with the
-// cell's size h in place of the particle spacing (volume h^3, radius h / 2), or Johnson and
-// Cook's (1985) failure strain. `p` is the effective pressure, `s` the deviator after the
-// return, `c` the EOS's bulk sound speed.
-double grownDamage(const strength::Material& sm, double d, double dt, double p, double rho,
-                   double c, double g, double h, const strength::YieldInput& in,
-                   const strength::Deviator& s, const strength::ReturnResult& rr) {
-  if (const auto* gk = std::get_if<strength::GradyKipp>(&sm.damage)) {
-    const double sigma1 = strength::maxPrincipalStress(s, p);
-    if (sigma1 <= 0.0) return d;
-    const double e = strength::youngsModulus(rho * c * c, g);
-    const double eps = sigma1 / (std::max(1.0 - d, 1e-12) * e);
-    if (eps < gk->activationStrain(h * h * h)) return d;
-    const double cL = strength::longitudinalSoundSpeed(c, g, rho);
-    return strength::GradyKipp::grow(d, dt, gk->crackSpeed * cL, 0.5 * h);
-  }
-  if (const auto* jc = std::get_if<strength::JohnsonCookFailure>(&sm.damage)) {
-    if (rr.plasticStrain <= 0.0) return d;
-    const double seq = strength::vonMises(s);
-    const double triax = seq > 0.0 ? -p / seq : 0.0;
-    double th = 0.0;
-    if (const auto* law = std::get_if<strength::JohnsonCook>(&sm.yield))
-      th = law->homologous(in.temperature);
-    const double ef = jc->failureStrain(triax, in.strainRate, th);
-    return ef > 0.0 ? std::min(d + rr.plasticStrain / ef, 1.0) : 1.0;
-  }
-  return d;
-}
-
 
 void advectStrengthLine(StrengthState& st, StrengthLineWork& sw, const LineWork& w, int n,
                         double edgeMassLow, double rhoCut) {
@@ -299,9 +268,12 @@ void TvdSolver::strengthStep(double dt) {
           if (fracture && d < 1.0 && liveAt(i - 1, k) && liveAt(i + 1, k) && liveAt(i, k - 1) &&
               liveAt(i, k + 1))
             st.rq[detail::kDamage][cc] =
-                r * (es.pressure < -sm.spallStrength
-                         ? 1.0
-                         : detail::grownDamage(sm, d, dt, p, r, es.soundSpeed, G, h, in, s, rr));
+                r *
+                (es.pressure < -sm.spallStrength
+                     ? 1.0
+                     : strength::grownDamage(sm, d, dt, p, r, es.soundSpeed, G,
+                                             strength::longitudinalSoundSpeed(es.soundSpeed, G, r),
+                                             h, in, s, rr));
           st.s[0][cc] = s.xx;
           st.s[1][cc] = s.zz;
           st.s[2][cc] = s.xz;

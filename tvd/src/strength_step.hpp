@@ -166,13 +166,6 @@ inline void limitTension(CellState& s, double damage, double spall, bool intact)
   s.p = p;
 }
 
-//! Effect fracture: the damage D after a step of growth dt by the material's damage model
-//! (Grady-Kipp over a cell of size h, Johnson-Cook failure strain), from D at the pressure p
-//! (effective), the deviator s after the return and its result rr (strength_step.cpp).
-double grownDamage(const strength::Material& sm, double d, double dt, double p, double rho,
-                   double c, double g, double h, const strength::YieldInput& in,
-                   const strength::Deviator& s, const strength::ReturnResult& rr);
-
 //! Per-thread scratch of the advection along one line.
 struct StrengthLineWork {
   explicit StrengthLineWork(int capacity)

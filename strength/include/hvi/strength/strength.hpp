@@ -238,6 +238,35 @@ inline double longitudinalSoundSpeed(double cBulk, double g, double rho) {
   return std::sqrt(cBulk * cBulk + 4.0 * g / (3.0 * rho));
 }
 
+//! Effect fracture: damage after a step of dt by the material's damage model, shared by both
+//! solvers (docs/strength.md). Grady-Kipp tensile damage as in Benz and Asphaug (1995),
+//! deterministic per element of size `size` (volume size^3, radius size / 2: the SPH particle's
+//! spacing, the TVD cell's side), or Johnson and Cook's (1985) failure strain. `p` is the
+//! effective pressure, `s` the deviator after the return, `c` the EOS's bulk sound speed, `cL`
+//! the longitudinal one.
+inline double grownDamage(const Material& sm, double d, double dt, double p, double rho, double c,
+                          double g, double cL, double size, const YieldInput& in, const Deviator& s,
+                          const ReturnResult& rr) {
+  if (const auto* gk = std::get_if<GradyKipp>(&sm.damage)) {
+    const double sigma1 = maxPrincipalStress(s, p);
+    if (sigma1 <= 0.0) return d;
+    const double e = youngsModulus(rho * c * c, g);
+    const double eps = sigma1 / (std::max(1.0 - d, 1e-12) * e);
+    if (eps < gk->activationStrain(size * size * size)) return d;
+    return GradyKipp::grow(d, dt, gk->crackSpeed * cL, 0.5 * size);
+  }
+  if (const auto* jc = std::get_if<JohnsonCookFailure>(&sm.damage)) {
+    if (rr.plasticStrain <= 0.0) return d;
+    const double seq = vonMises(s);
+    const double triax = seq > 0.0 ? -p / seq : 0.0;
+    double th = 0.0;
+    if (const auto* law = std::get_if<JohnsonCook>(&sm.yield)) th = law->homologous(in.temperature);
+    const double ef = jc->failureStrain(triax, in.strainRate, th);
+    return ef > 0.0 ? std::min(d + rr.plasticStrain / ef, 1.0) : 1.0;
+  }
+  return d;
+}
+
 //! "constant", "johnson_cook", "steinberg_guinan" (YieldModel's order).
 std::span<const std::string_view> yieldModelNames();
 //! "none", "grady_kipp", "johnson_cook" (DamageModel's order).
