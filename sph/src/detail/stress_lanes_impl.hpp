@@ -1,9 +1,9 @@
 //! @file Body of the stress lane kernels (stress_lanes.hpp), included once per instruction set
 //! with HVI_LANES (the lane count) and HVI_LANES_NS (a namespace of its own) defined. Like
 //! force_lanes_impl.hpp it calls no inline function of another header (an AVX-512 copy of a
-//! shared inline function could be the one the linker keeps for baseline code), hence its own
-//! copies of the lane helpers and of the lane exponential (force_lanes_impl.hpp's, the same
-//! operations as kernel.hpp's expNegative).
+//! shared inline function could be the one the linker keeps for baseline code), hence the lane
+//! helpers and the lane exponential come from lane_ops_impl.hpp, included inside this file's
+//! own namespace.
 #include <cstddef>
 #include <cstdint>
 
@@ -13,28 +13,7 @@
 namespace hvi::sph::detail::HVI_LANES_NS {
 namespace {
 
-constexpr int L = HVI_LANES;
-using D = double __attribute__((vector_size(8 * L)));
-using I = std::int64_t __attribute__((vector_size(8 * L)));
-
-inline D splat(double v) { return D{} + v; }
-inline D gather(const double* p, const int* idx) {
-  D v;
-  for (int l = 0; l < L; ++l) v[l] = p[idx[l]];
-  return v;
-}
-inline D select(I m, D a, D b) { return m ? a : b; }
-inline bool anyLane(I m) {
-  std::int64_t any = 0;
-  for (int l = 0; l < L; ++l) any |= m[l];
-  return any != 0;
-}
-inline void store(double* p, D v) { __builtin_memcpy(p, &v, sizeof v); }
-inline D load(const double* p) {
-  D v;
-  __builtin_memcpy(&v, p, sizeof v);
-  return v;
-}
+#include "detail/lane_ops_impl.hpp"
 
 // The 8 columns of the neighbours' point records (StressLaneArrays::rec, 8 doubles a point):
 // L whole-record loads transposed in registers instead of 8 element-by-element gathers (the
@@ -85,29 +64,6 @@ inline void records(const double* rec, const int* idx, D (&c)[8]) {
   for (int k = 0; k < 8; ++k)
     for (int l = 0; l < L; ++l) c[k][l] = rec[8 * static_cast<std::ptrdiff_t>(idx[l]) + k];
 #endif
-}
-
-inline D expNegative(D x) {
-  constexpr double ln2hi = 6.93147180369123816490e-01;
-  constexpr double ln2lo = 1.90821492927058770002e-10;
-  constexpr double invLn2 = 1.44269504088896338700e+00;
-  constexpr double two52 = 4503599627370496.0;
-  const D y = x * invLn2 + 0.5;
-  D n = (y + two52) - two52;
-  n = select(n > y, n - 1.0, n);
-  const D r = (n * ln2hi - x) + n * ln2lo;
-  const D r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
-  const D a0 = 1.0 + r, a1 = 0.5 + r * (1.0 / 6.0);
-  const D a2 = 1.0 / 24.0 + r * (1.0 / 120.0), a3 = 1.0 / 720.0 + r * (1.0 / 5040.0);
-  const D a4 = 1.0 / 40320.0 + r * (1.0 / 362880.0);
-  const D a5 = 1.0 / 3628800.0 + r * (1.0 / 39916800.0);
-  const D a6 = 1.0 / 479001600.0 + r * (1.0 / 6227020800.0);
-  const D b0 = a0 + a1 * r2, b1 = a2 + a3 * r2, b2 = a4 + a5 * r2;
-  const D d0 = b0 + b1 * r4, d1 = b2 + a6 * r4;
-  const D p = d0 + d1 * r8;
-  const I nbits = (I)(n + 6755399441055744.0);
-  const I scale = (I{} + (std::int64_t{1023} << 52)) - (nbits << 52);
-  return p * (D)scale;
 }
 
 // GaussianKernel::value(r2, h, ih2), lane by lane.
