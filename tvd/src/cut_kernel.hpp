@@ -234,17 +234,14 @@ class CutLineSolver {
     if (L_.right == Side::Reflect) wall(n_ + 1);
   }
 
-  // Options::closedOutflow (an experiment, off): an outflow side lets a phase out, never back
-  // in (docs/tvd.md, "Outflow sides: no re-entry"). The zero-gradient ghost copies the edge cell, so where the phase there moves
-  // into the domain its face flux carries mass in: material that the marker lines, which end
-  // at the domain's edge, do not hold. The settle then packs it into the phase's shrinking
-  // part of the edge cell, its pressure pushes the edge material further in and draws still
-  // more: variant 1 at 0.0075 cm took 0.16 of its 0.28 energy in through the top side this
-  // way. Such a face is a wall for the phase (a rigid boundary that material leaves, as
-  // Eulerian hydrocodes' outflow sides prevent inflow): no mass, tangential momentum or
-  // energy, and the normal momentum of the pressure p* of the contact between the edge cell
-  // and its mirror image (contactStar: p at rest, falling to 0 as the material pulls away,
-  // never tension), which keeps a uniform state at rest at rest.
+  // Options::closedOutflow (an experiment, off; docs/tvd.md "Outflow sides: no re-entry"):
+  // an outflow side lets a phase out, never back in. The zero-gradient ghost copies the edge
+  // cell, so where the phase there moves into the domain its face flux carries mass in that no
+  // marker line holds (variant 1 at 0.0075 cm took 0.16 of its 0.28 energy in through its top
+  // side). With the option such a face is a wall for the phase: no mass, tangential momentum or
+  // energy, and the normal momentum of the contact pressure between the edge cell and its
+  // mirror image (p at rest, falling to 0 as the material pulls away, never tension); in r-z
+  // the hoop term takes the same face pressure.
   void noReentry(PhaseLine& ph, bool hoop) {
     if (!C_.closedOutflow) return;
     auto wallFlux = [&](int f, int j, bool right) {

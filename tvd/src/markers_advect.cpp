@@ -53,8 +53,8 @@ void MarkerSet::advect(const GridSpec& grid, const double* vx, const double* vz,
   const double z0 = grid.z0, z1 = grid.z0 + grid.nz * grid.dz;
   // Beyond an open side a marker stays where it is: what it bounded has left.
   auto beyond = [&](Vec2 p) {
-    return anyOpen && ((open[0] && p.x < x0) || (open[1] && p.x > x1) ||
-                       (open[2] && p.z < z0) || (open[3] && p.z > z1));
+    return anyOpen && ((open[0] && p.x < x0) || (open[1] && p.x > x1) || (open[2] && p.z < z0) ||
+                       (open[3] && p.z > z1));
   };
   // The odd continuation applies only when the grid's left face is the axis.
   const VelocityField v{grid, vx, vz, rz && std::abs(grid.x0) <= 1e-12 * grid.dx};
@@ -66,8 +66,8 @@ void MarkerSet::advect(const GridSpec& grid, const double* vx, const double* vz,
     for (long j = 0; j < n; ++j) {
       const Vec2 p = pts[static_cast<std::size_t>(j)];
       const bool onAxis = rz && p.x == 0.0;
-      // Explicit midpoint rule along the path in the (time-centred) velocity field.
       if (beyond(p)) continue;
+      // Explicit midpoint rule along the path in the (time-centred) velocity field.
       Vec2 half = p + (0.5 * dt) * v(p);
       if (rz) half.x = onAxis ? 0.0 : std::max(half.x, 0.0);
       Vec2 q = p + dt * v(half);

@@ -211,7 +211,6 @@ double TvdSolver::stableTimeStep() const {
   return s > 0.0 ? params_.cfl * grid_.dx / s : std::numeric_limits<double>::infinity();
 }
 
-
 double TvdSolver::advance(double tStop) {
   if (!(tStop > time_)) return 0.0;
   long worst = -1;

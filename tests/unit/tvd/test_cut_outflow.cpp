@@ -109,8 +109,8 @@ TEST(TvdCutOutflow, NothingReentersThroughAnOutflowSide) {
     else
       s.bodies.push_back(
           body("block", 0, cases::Rect{-0.2, 0.2, 0.1, 0.5}, {2.79, {0.0, -0.3}, 0.0}));
-    s.bodies.push_back(body("base", 0, cases::Rect{rz ? 0.0 : -0.5, 0.1, -0.45, -0.35},
-                            {2.79, {0.0, 0.0}, 0.0}));
+    s.bodies.push_back(
+        body("base", 0, cases::Rect{rz ? 0.0 : -0.5, 0.1, -0.45, -0.35}, {2.79, {0.0, 0.0}, 0.0}));
     double gained[2] = {0.0, 0.0};
     for (int reentry = 0; reentry < 2; ++reentry) {
       Options o;
@@ -129,10 +129,11 @@ TEST(TvdCutOutflow, NothingReentersThroughAnOutflowSide) {
         for (double out : solver.phaseOutflowMass()) worstOut = std::min(worstOut, out / m0);
       }
       gained[reentry] = worstMass;
-      std::printf("  %s, %s: %ld steps, largest gain of the block's mass %.2e, lowest booked "
-                  "outflow %.2e, largest energy gain %.2e\n",
-                  rz ? "r-z" : "planar", reentry ? "default (re-entry)" : "closedOutflow", solver.step(),
-                  worstMass, worstOut, worstEnergy);
+      std::printf(
+          "  %s, %s: %ld steps, largest gain of the block's mass %.2e, lowest booked "
+          "outflow %.2e, largest energy gain %.2e\n",
+          rz ? "r-z" : "planar", reentry ? "default (re-entry)" : "closedOutflow", solver.step(),
+          worstMass, worstOut, worstEnergy);
       if (reentry == 0) {
         EXPECT_GE(worstOut, 0.0);
         EXPECT_LT(worstMass, 1e-12);

@@ -124,7 +124,7 @@ class Ownership {
   std::vector<long> fresh_;           // cells given a velocity in this ring
   std::vector<double> normalLength_;  // marker length per cell
   bool cutCells_ = false;
-  std::array<bool, 4> open_{};  // cut-cell mode: the outflow sides (MarkerSet::advect)
+  std::array<bool, 4> open_{};    // cut-cell mode: the outflow sides (MarkerSet::advect)
   std::vector<double> fraction_;  // cut-cell mode: object fractions per cell
 };
 
