@@ -75,12 +75,13 @@ struct SweepContext {
   int contactIterations = 2;
   double dt = 0.0;
   double h = 0.0;  //!< cell size (cut-cell merging compares a cell's volume with its faces)
-  int axis = 0;  //!< the lines run along x (0) or z (1): where the budgets book kMn and kMt
+  int axis = 0;    //!< the lines run along x (0) or z (1): where the budgets book kMn and kMt
   bool keepColdStates = false;  //!< cut-cell mode: Options::keepColdStates
   //! Effect fracture, cut-cell mode (null without it): per phase its spall strength (Mbar; < 0
   //! for a phase without fracture, a fluid) and the density below which it is torn (no tension).
   const double* spall = nullptr;
   const double* rhoIntact = nullptr;
+  bool closedOutflow = false;  //!< cut-cell mode: Options::closedOutflow
 };
 
 //! One line: `n` cells loaded at buffer positions 2..n+1.

@@ -45,8 +45,17 @@ struct VelocityField {
 
 }  // namespace
 
-void MarkerSet::advect(const GridSpec& grid, const double* vx, const double* vz, double dt) {
+void MarkerSet::advect(const GridSpec& grid, const double* vx, const double* vz, double dt,
+                       std::array<bool, 4> open) {
   const bool rz = geometry_ == Geometry::Axisymmetric;
+  const bool anyOpen = open[0] || open[1] || open[2] || open[3];
+  const double x0 = grid.x0, x1 = grid.x0 + grid.nx * grid.dx;
+  const double z0 = grid.z0, z1 = grid.z0 + grid.nz * grid.dz;
+  // Beyond an open side a marker stays where it is: what it bounded has left.
+  auto beyond = [&](Vec2 p) {
+    return anyOpen && ((open[0] && p.x < x0) || (open[1] && p.x > x1) || (open[2] && p.z < z0) ||
+                       (open[3] && p.z > z1));
+  };
   // The odd continuation applies only when the grid's left face is the axis.
   const VelocityField v{grid, vx, vz, rz && std::abs(grid.x0) <= 1e-12 * grid.dx};
   std::atomic<long> bad{-1};
@@ -57,6 +66,7 @@ void MarkerSet::advect(const GridSpec& grid, const double* vx, const double* vz,
     for (long j = 0; j < n; ++j) {
       const Vec2 p = pts[static_cast<std::size_t>(j)];
       const bool onAxis = rz && p.x == 0.0;
+      if (beyond(p)) continue;
       // Explicit midpoint rule along the path in the (time-centred) velocity field.
       Vec2 half = p + (0.5 * dt) * v(p);
       if (rz) half.x = onAxis ? 0.0 : std::max(half.x, 0.0);

@@ -158,6 +158,7 @@ Totals TvdSolver::totals() const {
   for (long c = 0; c < cells; ++c) {
     const auto cc = static_cast<std::size_t>(c);
     const double r = U_.rho[cc];
+    if (r < 0.0) mass += cellVolume(c) * r;  // vacuum of negative mass (cut cells), at rest
     if (!(r > 0.0)) continue;
     const double vol = cellVolume(c);
     const double k = 0.5 * (U_.mx[cc] * U_.mx[cc] + U_.mz[cc] * U_.mz[cc]) / r;

@@ -129,7 +129,7 @@ void Ownership::advanceLines(const Conserved& U, double dt, int rowLo, int rowHi
   const GridSpec& g = cells_.grid;
   centredVelocity(U, rowLo, rowHi);
   extendIntoVacuum(2, rowLo, rowHi);
-  markers_.advect(g, midX(), midZ(), dt);
+  markers_.advect(g, midX(), midZ(), dt, open_);
   markers_.redistribute(g);
 }
 

@@ -49,9 +49,16 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
   }
   time_ = scene.tStart;
   if (markersOn_) {
+    std::array<bool, 4> open{};
     ownership_.setCutCells(cut_);
     ownership_.setUp(scene, cellVolumes_, objectMaterial_, bodyStates_,
                      static_cast<int>(materials_.size()), threads_);
+    // docs/tvd.md, "Outflow sides: no re-entry" (Options::closedOutflow).
+    if (cut_ && options_.closedOutflow)
+      for (int side = 0; side < 4; ++side)
+        open[static_cast<std::size_t>(side)] =
+            scene.domain.boundary[static_cast<std::size_t>(side)] == cases::Boundary::Outflow;
+    ownership_.setOpenSides(open);
   }
   setUpStrength(scene);
   if (cut_) {

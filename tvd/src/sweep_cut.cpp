@@ -64,6 +64,7 @@ void TvdSolver::sweepCut(int direction, double dt) {
   ctx.entropyFix = options_.entropyFix;
   ctx.contactIterations = options_.contactIterations;
   ctx.keepColdStates = options_.keepColdStates;
+  ctx.closedOutflow = options_.closedOutflow;
   ctx.dt = dt;
   ctx.h = h;
   ctx.axis = xdir ? 0 : 1;

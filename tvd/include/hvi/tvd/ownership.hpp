@@ -2,6 +2,7 @@
 //! (cell -> object), the index array (object -> material), the interface normals, the owner
 //! update after each step and the per-material mass renormalisation (docs/tvd.md).
 #pragma once
+#include <array>
 #include <vector>
 
 #include "hvi/cases/scene.hpp"
@@ -48,6 +49,9 @@ class Ownership {
   //! rasterisation keeps every object's cell fractions (fractions()), and the markers move with
   //! the velocity of every cell that holds material, owned or not.
   void setCutCells(bool on) { cutCells_ = on; }
+  //! Cut-cell mode with Options::closedOutflow: the outflow sides (xmin, xmax, zmin, zmax)
+  //! beyond which the marker lines stay put (MarkerSet::advect); none by default.
+  void setOpenSides(std::array<bool, 4> open) { open_ = open; }
   //! The marker step of the cut-cell mode: moves and redistributes the lines, rebuilds the
   //! owner and normal arrays and the fractions; the flow state is not touched. The material
   //! and the lines lie within grid rows [rowLo, rowHi), at least two rows from their ends (or
@@ -120,6 +124,7 @@ class Ownership {
   std::vector<long> fresh_;           // cells given a velocity in this ring
   std::vector<double> normalLength_;  // marker length per cell
   bool cutCells_ = false;
+  std::array<bool, 4> open_{};    // cut-cell mode: the outflow sides (MarkerSet::advect)
   std::vector<double> fraction_;  // cut-cell mode: object fractions per cell
 };
 
