@@ -121,7 +121,7 @@ constexpr std::array<KeyRow<SphParams>, 19> kSph{{
      .docDefault = "`\"total\"`"},
 }};
 
-constexpr std::array<KeyRow<TvdParams>, 6> kTvd{{
+constexpr std::array<KeyRow<TvdParams>, 7> kTvd{{
     {.key = "cell_size", .kind = K::Quantity, HVI_KEY_FIELD(TvdParams, cellSize),
      .ok = [](double v) { return v > 0.0; }, .problem = "must be > 0", .allowed = "a length > 0",
      .docValue = "length > 0, dx = dz", .docDefault = "`0.015 cm`"},
@@ -147,6 +147,12 @@ constexpr std::array<KeyRow<TvdParams>, 6> kTvd{{
      .docValue = "`\"whole_cell\"` (the study's owners), `\"conservative\"` (cut cells, mass exact "
                  "per material)",
      .docDefault = "`\"conservative\"`"},
+    // docs/tvd.md, "Outflow sides: no re-entry": the conservative interfaces only.
+    {.key = "outflow", .kind = K::Choice, HVI_KEY_FIELD(TvdParams, outflow),
+     .choices = outflowModeNames,
+     .docValue = "`\"open\"` (zero-gradient ghost: material may re-enter), `\"no_reentry\"` "
+                 "(a phase moving inwards meets a wall there; conservative interfaces)",
+     .docDefault = "`\"open\"`"},
 }};
 
 // Measured on sod_x at 1e6 cells: 170 MB peak memory, 49 MB of HDF5 + VTK per snapshot, 2 s for

@@ -16,6 +16,7 @@ constexpr std::array<std::string_view, 2> kEnergyForms{"compatible", "symmetric"
 constexpr std::array<std::string_view, 3> kRzForms{"auto", "ring", "symmetric"};
 constexpr std::array<std::string_view, 2> kViscositySwitches{"off", "morris_monaghan"};
 constexpr std::array<std::string_view, 2> kYieldStrainRates{"total", "plastic"};
+constexpr std::array<std::string_view, 2> kOutflowModes{"open", "no_reentry"};
 
 template <class E, std::size_t N>
 std::string_view nameOf(const std::array<std::string_view, N>& names, E e) {
@@ -31,6 +32,7 @@ std::span<const std::string_view> kernelNames() { return kKernels; }
 std::span<const std::string_view> latticeNames() { return kLattices; }
 std::span<const std::string_view> limiterNames() { return kLimiters; }
 std::span<const std::string_view> interfaceNames() { return kInterfaces; }
+std::span<const std::string_view> outflowModeNames() { return kOutflowModes; }
 std::span<const std::string_view> energyFormNames() { return kEnergyForms; }
 std::span<const std::string_view> rzFormNames() { return kRzForms; }
 std::span<const std::string_view> viscositySwitchNames() { return kViscositySwitches; }
@@ -42,6 +44,7 @@ std::string_view toString(Kernel k) { return nameOf(kKernels, k); }
 std::string_view toString(Lattice l) { return nameOf(kLattices, l); }
 std::string_view toString(Limiter l) { return nameOf(kLimiters, l); }
 std::string_view toString(InterfaceMode m) { return nameOf(kInterfaces, m); }
+std::string_view toString(OutflowMode m) { return nameOf(kOutflowModes, m); }
 std::string_view toString(EnergyForm f) { return nameOf(kEnergyForms, f); }
 std::string_view toString(RzForm f) { return nameOf(kRzForms, f); }
 std::string_view toString(ViscositySwitch v) { return nameOf(kViscositySwitches, v); }

@@ -153,6 +153,17 @@ void checkSphFill(const TableReader& root, const Scene& scene, const Sources& sr
 
 // Without marker lines the TVD solver keeps one material (its cells hold no material index).
 void checkTvdMaterials(const TableReader& root, const Scene& scene, const Sources& src) {
+  // No re-entry is a rule of the cut cells' phase faces (docs/tvd.md, "Outflow sides: no
+  // re-entry"): the conservative interface mode only.
+  if (scene.tvd.outflow == OutflowMode::NoReentry &&
+      !(scene.has(Effect::MaterialInterfaces) &&
+        scene.tvd.interfaces == InterfaceMode::Conservative))
+    root.subTable("tvd", true)
+        ->fail("outflow",
+               "\"no_reentry\" acts on the phases of the conservative interface mode, which this "
+               "scene does not run",
+               "tvd.outflow = \"open\", or effects with \"material_interfaces\" and "
+               "tvd.interfaces = \"conservative\"");
   if (scene.has(Effect::MaterialInterfaces)) return;
   for (std::size_t i = 1; i < scene.bodies.size(); ++i) {
     if (scene.bodies[i].material == scene.bodies[0].material) continue;

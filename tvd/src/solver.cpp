@@ -26,6 +26,7 @@ TvdSolver::~TvdSolver() = default;
 
 TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
     : geometry_(scene.geometry), domain_(scene.domain), params_(scene.tvd), options_(options) {
+  if (scene.tvd.outflow == cases::OutflowMode::NoReentry) options_.closedOutflow = true;
   setUpGrid(scene);
   setUpMaterials(scene);
 #ifdef _OPENMP

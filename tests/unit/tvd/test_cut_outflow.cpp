@@ -113,9 +113,10 @@ TEST(TvdCutOutflow, NothingReentersThroughAnOutflowSide) {
         body("base", 0, cases::Rect{rz ? 0.0 : -0.5, 0.1, -0.45, -0.35}, {2.79, {0.0, 0.0}, 0.0}));
     double gained[2] = {0.0, 0.0};
     for (int reentry = 0; reentry < 2; ++reentry) {
-      Options o;
-      o.closedOutflow = reentry == 0;
-      TvdSolver solver(s, o);
+      // The scene's key tvd.outflow = "no_reentry" sets Options::closedOutflow.
+      cases::Scene sr = s;
+      sr.tvd.outflow = reentry == 0 ? cases::OutflowMode::NoReentry : cases::OutflowMode::Open;
+      TvdSolver solver(sr, Options{});
       ASSERT_TRUE(solver.cutCells());
       const double m0 = phaseMasses(solver)[0];
       const double e0 = solver.totals().energy();

@@ -18,6 +18,7 @@ std::span<const std::string_view> kernelNames();    //!< gaussian, cubic_spline
 std::span<const std::string_view> latticeNames();   //!< square, hexagonal
 std::span<const std::string_view> limiterNames();   //!< minmod, van_leer, superbee
 std::span<const std::string_view> interfaceNames(); //!< whole_cell, conservative
+std::span<const std::string_view> outflowModeNames();  //!< open, no_reentry
 std::span<const std::string_view> energyFormNames(); //!< compatible, symmetric
 std::span<const std::string_view> rzFormNames();     //!< auto, ring, symmetric
 std::span<const std::string_view> viscositySwitchNames();  //!< off, morris_monaghan
@@ -29,6 +30,7 @@ std::string_view toString(Kernel k);
 std::string_view toString(Lattice l);
 std::string_view toString(Limiter l);
 std::string_view toString(InterfaceMode m);
+std::string_view toString(OutflowMode m);
 std::string_view toString(EnergyForm f);
 std::string_view toString(RzForm f);
 std::string_view toString(ViscositySwitch v);

@@ -155,10 +155,14 @@ enum class Limiter { Minmod, VanLeer, Superbee };
 //! with ghost-fluid faces, or conservative cut cells (every material its own state on its part
 //! of a cell, mass exact per material).
 enum class InterfaceMode { WholeCell, Conservative };
+//! TVD cut-cell mode at outflow sides: the zero-gradient ghost (material may re-enter) or no
+//! re-entry (docs/tvd.md, "Outflow sides: no re-entry").
+enum class OutflowMode { Open, NoReentry };
 
 struct TvdParams {
   double cellSize = 0.015;  //!< dx = dz, cm
   InterfaceMode interfaces = InterfaceMode::Conservative;
+  OutflowMode outflow = OutflowMode::Open;
   Limiter limiter = Limiter::Minmod;
   double cfl = 0.4;
   double markerSpacing = 0.5;  //!< target marker spacing in cells
