@@ -50,6 +50,7 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
   time_ = scene.tStart;
   if (markersOn_) {
     ownership_.setCutCells(cut_);
+    ownership_.setWallMirror(options_.markerWallMirror);
     ownership_.setUp(scene, cellVolumes_, objectMaterial_, bodyStates_,
                      static_cast<int>(materials_.size()), threads_);
   }

@@ -2,6 +2,7 @@
 //! (cell -> object), the index array (object -> material), the interface normals, the owner
 //! update after each step and the per-material mass renormalisation (docs/tvd.md).
 #pragma once
+#include <array>
 #include <vector>
 
 #include "hvi/cases/scene.hpp"
@@ -48,6 +49,8 @@ class Ownership {
   //! rasterisation keeps every object's cell fractions (fractions()), and the markers move with
   //! the velocity of every cell that holds material, owned or not.
   void setCutCells(bool on) { cutCells_ = on; }
+  //! Cut cells: the markers' velocity field mirrors at walls (Options::markerWallMirror).
+  void setWallMirror(bool on) { wallMirror_ = on; }
   //! The marker step of the cut-cell mode: moves and redistributes the lines, rebuilds the
   //! owner and normal arrays and the fractions; the flow state is not touched. The material
   //! and the lines lie within grid rows [rowLo, rowHi), at least two rows from their ends (or
@@ -120,6 +123,8 @@ class Ownership {
   std::vector<long> fresh_;           // cells given a velocity in this ring
   std::vector<double> normalLength_;  // marker length per cell
   bool cutCells_ = false;
+  bool wallMirror_ = true;
+  std::array<bool, 4> walls_{};   //!< xmin, xmax, zmin, zmax mirror the markers (cut cells)
   std::vector<double> fraction_;  // cut-cell mode: object fractions per cell
 };
 

@@ -35,6 +35,11 @@ struct Options {
   //! positive). It removes the Whipple d = 1 cm run's floors but makes a thin-cell outflow scene
   //! collapse (docs/tvd.md, "The energy floor in cold compressed cells").
   bool keepColdStates = false;
+  //! Cut-cell mode: the markers' velocity field continues the normal component oddly across a
+  //! wall (zero on it) and keeps markers inside, so a body's side on a wall stays there
+  //! (docs/strength.md, "TVD fracture": the spall scene's lateral tension pulled the phases off
+  //! the walls). false: the earlier field, clamped to the outermost cell centres.
+  bool markerWallMirror = true;
 };
 
 //! Eulerian TVD solver (the scheme is specified in docs/tvd.md):
