@@ -14,12 +14,14 @@ namespace {
 //! Bilinear interpolation of cell-centred data in the lerp form a + f (b - a), so a constant
 //! field is reproduced bit for bit. Beyond the outermost cell centres the nearest values are
 //! used; on the r-z axis side the radial component is continued oddly (ghost = -vx), which
-//! makes vx vanish on the axis and keeps linear fields v = a r exact.
+//! makes vx vanish on the axis and keeps linear fields v = a r exact; so is the normal
+//! component across a side in `walls` (xmin, xmax, zmin, zmax).
 struct VelocityField {
   const GridSpec& g;
   const double* vx;
   const double* vz;
   bool axis;
+  std::array<bool, 4> walls{};
 
   static double lerp(double a, double b, double f) { return a + f * (b - a); }
 
@@ -34,11 +36,15 @@ struct VelocityField {
     const int i0 = std::clamp(i, 0, g.nx - 1), i1 = std::clamp(i + 1, 0, g.nx - 1);
     const int k0 = std::clamp(k, 0, g.nz - 1), k1 = std::clamp(k + 1, 0, g.nz - 1);
     const long r0 = static_cast<long>(k0) * g.nx, r1 = static_cast<long>(k1) * g.nx;
-    const double sx = (axis && i < 0) ? -1.0 : 1.0;  // odd ghost of vx across the axis
-    const double ux0 = lerp(sx * vx[r0 + i0], vx[r0 + i1], fx);
-    const double ux1 = lerp(sx * vx[r1 + i0], vx[r1 + i1], fx);
-    const double uz0 = lerp(vz[r0 + i0], vz[r0 + i1], fx);
-    const double uz1 = lerp(vz[r1 + i0], vz[r1 + i1], fx);
+    // Odd ghosts of the normal component across the axis and the walls.
+    const double sx = ((axis || walls[0]) && i < 0) ? -1.0 : 1.0;
+    const double sxHi = (walls[1] && i >= g.nx - 1) ? -1.0 : 1.0;
+    const double sz = (walls[2] && k < 0) ? -1.0 : 1.0;
+    const double szHi = (walls[3] && k >= g.nz - 1) ? -1.0 : 1.0;
+    const double ux0 = lerp(sx * vx[r0 + i0], sxHi * vx[r0 + i1], fx);
+    const double ux1 = lerp(sx * vx[r1 + i0], sxHi * vx[r1 + i1], fx);
+    const double uz0 = sz * lerp(vz[r0 + i0], vz[r0 + i1], fx);
+    const double uz1 = szHi * lerp(vz[r1 + i0], vz[r1 + i1], fx);
     return {lerp(ux0, ux1, fz), lerp(uz0, uz1, fz)};
   }
 };
@@ -46,7 +52,7 @@ struct VelocityField {
 }  // namespace
 
 void MarkerSet::advect(const GridSpec& grid, const double* vx, const double* vz, double dt,
-                       std::array<bool, 4> open) {
+                       std::array<bool, 4> walls, std::array<bool, 4> open) {
   const bool rz = geometry_ == Geometry::Axisymmetric;
   const bool anyOpen = open[0] || open[1] || open[2] || open[3];
   const double x0 = grid.x0, x1 = grid.x0 + grid.nx * grid.dx;
@@ -57,7 +63,19 @@ void MarkerSet::advect(const GridSpec& grid, const double* vx, const double* vz,
                        (open[3] && p.z > z1));
   };
   // The odd continuation applies only when the grid's left face is the axis.
-  const VelocityField v{grid, vx, vz, rz && std::abs(grid.x0) <= 1e-12 * grid.dx};
+  const VelocityField v{grid, vx, vz, rz && std::abs(grid.x0) <= 1e-12 * grid.dx, walls};
+  const bool anyWall = walls[0] || walls[1] || walls[2] || walls[3];
+  const double lo[2] = {grid.x0, grid.z0};
+  const double hi[2] = {grid.x0 + grid.nx * grid.dx, grid.z0 + grid.nz * grid.dz};
+  // A marker stays inside the walls (on a wall the odd ghost leaves it no normal velocity but
+  // the round-off of its position).
+  auto inside = [&](Vec2 q) {
+    if (walls[0]) q.x = std::max(q.x, lo[0]);
+    if (walls[1]) q.x = std::min(q.x, hi[0]);
+    if (walls[2]) q.z = std::max(q.z, lo[1]);
+    if (walls[3]) q.z = std::min(q.z, hi[1]);
+    return q;
+  };
   std::atomic<long> bad{-1};
   for (std::size_t l = 0; l < lines_.size(); ++l) {
     auto& pts = lines_[l].points;
@@ -70,8 +88,10 @@ void MarkerSet::advect(const GridSpec& grid, const double* vx, const double* vz,
       // Explicit midpoint rule along the path in the (time-centred) velocity field.
       Vec2 half = p + (0.5 * dt) * v(p);
       if (rz) half.x = onAxis ? 0.0 : std::max(half.x, 0.0);
+      if (anyWall) half = inside(half);
       Vec2 q = p + dt * v(half);
       if (rz) q.x = onAxis ? 0.0 : std::max(q.x, 0.0);
+      if (anyWall) q = inside(q);
       if (std::isfinite(q.x) && std::isfinite(q.z))
         pts[static_cast<std::size_t>(j)] = q;
       else

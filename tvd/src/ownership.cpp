@@ -28,6 +28,12 @@ void Ownership::setUp(const cases::Scene& scene, const CellVolumes& cells,
   const auto n = static_cast<std::size_t>(g.cells());
   markers_ = MarkerSet::fromBodies(scene, g);
   throwIfStopRequested("the TVD marker lines");
+  // The conservative interfaces: the markers mirror at the walls (MarkerSet::advect,
+  // Options::markerWallMirror); the study's whole-cell mode keeps the clamped field.
+  for (int side = 0; side < 4; ++side)
+    walls_[static_cast<std::size_t>(side)] =
+        cutCells_ && wallMirror_ &&
+        scene.domain.boundary[static_cast<std::size_t>(side)] == cases::Boundary::Wall;
   if (cutCells_) {
     // The cut cells take their interface areas from the face apertures and never change owners
     // (update is the whole-cell mode's): no marker normals of whole-cell faces, no new-owner
@@ -129,7 +135,7 @@ void Ownership::advanceLines(const Conserved& U, double dt, int rowLo, int rowHi
   const GridSpec& g = cells_.grid;
   centredVelocity(U, rowLo, rowHi);
   extendIntoVacuum(2, rowLo, rowHi);
-  markers_.advect(g, midX(), midZ(), dt, open_);
+  markers_.advect(g, midX(), midZ(), dt, walls_, open_);
   markers_.redistribute(g);
 }
 

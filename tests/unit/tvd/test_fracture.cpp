@@ -49,9 +49,8 @@ cases::Scene fractureScene(double xmin, double xmax, double zmin, double zmax, d
 // any advected quantity) is located by its mean depth. Bound 3 cells, as the SPH test's 3
 // spacings: each release is smeared over a few cells by the scheme, and the tension first
 // exceeds the spall strength a little before the two fully overlap. (The same scene with the
-// conservative interfaces, flyer and target two phases, does not spall there: its tension at
-// the meeting plane reaches a pressure of 0.6-0.75 GPa only, with fracture or without, and the
-// target fails at the contact instead; docs/strength.md, "TVD fracture", Open.)
+// conservative interfaces, flyer and target two phases: InterfacesCarryTheMeetingPlaneTension
+// below.)
 struct Spall {
   int failed = 0;
   double meanDepth = 0.0, spread = 0.0, energyDrift = 0.0, massDrift = 0.0, dMax = 0.0;
@@ -122,6 +121,123 @@ TEST(TvdFracture, SymmetricImpactSpallsWhereTheReleasesMeet) {
   EXPECT_LT(weak.massDrift, 1e-12);
   EXPECT_EQ(strong.failed, 0);
   EXPECT_EQ(strong.dMax, 0.0);
+}
+
+// The spall scene's tension with the conservative interfaces (flyer and target two phases): the
+// most negative pressure between depths 0.1 and 0.3 cm (the meeting plane 0.2 cm, with the
+// release fronts' smearing) up to 5 d / c_L, the spall strength out of reach (3 GPa).
+double meetingPlaneTension(bool phases, double cfl, bool wallMirror = true) {
+  const double dx = 0.01, d = 0.2, v0 = 0.02, width = 4 * dx;
+  cases::Scene s = fractureScene(0.0, width, -2 * d - 0.1, d + 0.1, dx);
+  if (!phases) s.effects.erase(Effect::MaterialInterfaces);
+  s.tvd.cfl = cfl;
+  s.domain.boundary = {cases::Boundary::Wall, cases::Boundary::Wall, cases::Boundary::Outflow,
+                       cases::Boundary::Outflow};
+  cases::Material al = material("aluminium", eos::aluminiumStudy());
+  strength::Material sm;  // elastic, as symmetricSpall's
+  sm.shearModulus = 0.276;
+  sm.yield = strength::ConstantYield{1.0};
+  sm.thermal.cv = 0.896e-5;
+  sm.spallStrength = 0.03;
+  al.strength = sm;
+  s.materials = {al};
+  const double rho0 = eos::referenceDensity(al.eos);
+  s.bodies = {body("flyer", 0, cases::Rect{0.0, width, 0.0, d}, {rho0, {0.0, -v0}, 0.0}),
+              body("target", 0, cases::Rect{0.0, width, -2 * d, 0.0}, {rho0, {}, 0.0})};
+  Options options;
+  options.markerWallMirror = wallMirror;
+  TvdSolver solver(s, options);
+  const GridSpec& g = solver.grid();
+  double pmin = 0.0;
+  const double tEnd = 5.0 * d / 0.633;
+  while (solver.time() < tEnd) {
+    solver.advance(tEnd);
+    const Snapshot snap = solver.snapshot();  // the field refers into it
+    const Field& p = field(snap, "pressure");
+    for (int k = 0; k < g.nz; ++k) {
+      const double z = g.z0 + (k + 0.5) * g.dz;
+      if (z < -0.3 || z > -0.1) continue;
+      for (int i = 0; i < g.nx; ++i)
+        pmin = std::min(pmin, p.data[static_cast<std::size_t>(k) * g.nx + i]);
+    }
+  }
+  return -pmin * 100.0;  // GPa
+}
+
+// The meeting plane's tension with the conservative interfaces equals one material's (the
+// acoustic 1.15 GPa of symmetricSpall's comment), at the default CFL 0.4 and at 0.1: the
+// conservative mode's phases carry the same elastic state. Bound 3 %: one material's own
+// distance from acoustics is 1 % (fronts smeared over a few cells), and the two modes' schemes
+// differ (cut-cell Heun sweeps, marker-measured fractions at the flyer's contact). With the
+// markers' earlier velocity field (Options::markerWallMirror = false: clamped at the outermost
+// cell centres, not mirrored at the walls) the phases' side markers move off the walls with the
+// wall cells' velocity, uniaxial strain's lateral tension pulls the target off them, and the
+// meeting plane's tension is relieved (0.81 GPa at CFL 0.4; docs/strength.md, "TVD fracture").
+TEST(TvdFracture, InterfacesCarryTheMeetingPlaneTension) {
+  const double one = meetingPlaneTension(false, 0.4);
+  const double two = meetingPlaneTension(true, 0.4);
+  const double twoFine = meetingPlaneTension(true, 0.1);
+  const double clamped = meetingPlaneTension(true, 0.4, false);
+  std::printf(
+      "meeting-plane tension (GPa): one material %.4f, phases %.4f at CFL 0.4, %.4f at "
+      "0.1; markers clamped at the walls %.4f\n",
+      one, two, twoFine, clamped);
+  EXPECT_NEAR(one, 1.15, 0.03 * 1.15);
+  EXPECT_NEAR(two / one, 1.0, 0.03);
+  EXPECT_NEAR(twoFine / one, 1.0, 0.03);
+  EXPECT_LT(clamped / one, 0.9);  // the mechanism: the option reproduces the earlier loss
+}
+
+// A plate of 0.2 cm at 100 m/s on a wall (the mirror image of a symmetric impact), uniaxial strain
+// (four cells between the side walls): the release from its free face reflects at the wall as
+// tension from 2 d / c_L = 0.63 us. The most negative pressure in the three cells at the wall up
+// to 0.9 us, GPa.
+double wallTension(bool phases, double cfl, bool mirror) {
+  const double dx = 0.01, d = 0.2, v0 = 0.01, width = 4 * dx;
+  cases::Scene s = fractureScene(0.0, width, 0.0, d + 0.1, dx);
+  if (!phases) s.effects.erase(Effect::MaterialInterfaces);
+  s.tvd.cfl = cfl;
+  s.domain.boundary = {cases::Boundary::Wall, cases::Boundary::Wall, cases::Boundary::Wall,
+                       cases::Boundary::Outflow};
+  cases::Material al = material("aluminium", eos::aluminiumStudy());
+  strength::Material sm;
+  sm.shearModulus = 0.276;
+  sm.yield = strength::ConstantYield{1.0};
+  sm.thermal.cv = 0.896e-5;
+  sm.spallStrength = 0.03;
+  al.strength = sm;
+  s.materials = {al};
+  const double rho0 = eos::referenceDensity(al.eos);
+  s.bodies = {body("plate", 0, cases::Rect{0.0, width, 0.0, d}, {rho0, {0.0, -v0}, 0.0})};
+  Options o;
+  o.markerWallMirror = mirror;  // false: the markers' earlier field, clamped at the walls
+  TvdSolver solver(s, o);
+  const GridSpec& g = solver.grid();
+  double pmin = 0.0;
+  while (solver.time() < 0.9) {
+    solver.advance(0.9);
+    const Snapshot snap = solver.snapshot();  // the field refers into it
+    const Field& p = field(snap, "pressure");
+    for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < g.nx; ++i)
+        pmin = std::min(pmin, p.data[static_cast<std::size_t>(k) * g.nx + i]);
+  }
+  return -pmin * 100;
+}
+
+// The conservative interfaces' body on a wall keeps the wall's tension as one material does:
+// its marker lines on the bottom and side walls stay there. Bound 3 % as above (measured +2 %;
+// at CFL 0.1 +4 %, not asserted). With the markers clamped at the walls (the earlier field) the
+// wall line moved off the wall with the wall cells' velocity, a gap opened and the tension was
+// relieved: 0.69 GPa at CFL 0.4 (0.62 at 0.1) against one material's 1.14.
+TEST(TvdFracture, BodyOnAWallKeepsTheWallsTension) {
+  const double one = wallTension(false, 0.4, true);
+  const double phase = wallTension(true, 0.4, true);
+  const double clamped = wallTension(true, 0.4, false);
+  std::printf("tension at the wall (GPa): one material %.4f, one phase %.4f, clamped %.4f\n", one,
+              phase, clamped);
+  EXPECT_NEAR(phase / one, 1.0, 0.03);
+  EXPECT_LT(clamped / one, 0.9);
 }
 
 // The same impact with Grady-Kipp tensile damage (Benz and Asphaug 1995) and the spall-strength

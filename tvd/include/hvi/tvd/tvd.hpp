@@ -41,8 +41,14 @@ struct Options {
   //! the contact pressure with the cell's mirror image), and marker lines beyond the side stay
   //! put. By default the zero-gradient ghost lets the phase in and the lines beyond follow the
   //! edge cells' velocity back in (variant 1 at 0.0075 cm took 0.16 of its 0.28 energy in
-  //! through its top side). Off because TvdCutOutflow's r-z scene then stops (open).
+  //! through its top side). Off because TvdCutOutflow's r-z scene then stops (open). The scene
+  //! key tvd.outflow = "no_reentry" sets it.
   bool closedOutflow = false;
+  //! Cut-cell mode: the markers' velocity field continues the normal component oddly across a
+  //! wall (zero on it) and keeps markers inside, so a body's side on a wall stays there
+  //! (docs/strength.md, "TVD fracture": the spall scene's lateral tension pulled the phases off
+  //! the walls). false: the earlier field, clamped to the outermost cell centres.
+  bool markerWallMirror = true;
 };
 
 //! Eulerian TVD solver (the scheme is specified in docs/tvd.md):
