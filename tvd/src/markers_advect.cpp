@@ -52,7 +52,7 @@ struct VelocityField {
 }  // namespace
 
 void MarkerSet::advect(const GridSpec& grid, const double* vx, const double* vz, double dt,
-                       std::array<bool, 4> walls, std::array<bool, 4> open) {
+                       std::array<bool, 4> walls, std::array<bool, 4> open, bool oddWalls) {
   const bool rz = geometry_ == Geometry::Axisymmetric;
   const bool anyOpen = open[0] || open[1] || open[2] || open[3];
   const double x0 = grid.x0, x1 = grid.x0 + grid.nx * grid.dx;
@@ -63,18 +63,19 @@ void MarkerSet::advect(const GridSpec& grid, const double* vx, const double* vz,
                        (open[3] && p.z > z1));
   };
   // The odd continuation applies only when the grid's left face is the axis.
-  const VelocityField v{grid, vx, vz, rz && std::abs(grid.x0) <= 1e-12 * grid.dx, walls};
+  const VelocityField v{grid, vx, vz, rz && std::abs(grid.x0) <= 1e-12 * grid.dx,
+                        oddWalls ? walls : std::array<bool, 4>{}};
   const bool anyWall = walls[0] || walls[1] || walls[2] || walls[3];
-  const double lo[2] = {grid.x0, grid.z0};
-  const double hi[2] = {grid.x0 + grid.nx * grid.dx, grid.z0 + grid.nz * grid.dz};
-  // A marker stays inside the walls (on a wall the odd ghost leaves it no normal velocity but
-  // the round-off of its position).
-  auto inside = [&](Vec2 q) {
-    if (walls[0]) q.x = std::max(q.x, lo[0]);
-    if (walls[1]) q.x = std::min(q.x, hi[0]);
-    if (walls[2]) q.z = std::max(q.z, lo[1]);
-    if (walls[3]) q.z = std::min(q.z, hi[1]);
-    return q;
+  // A marker on a wall keeps its normal coordinate (the mirror holds the material there), one
+  // inside does not cross the wall; one already beyond it (a body overlapping the side) is left.
+  // "On" within 1e-12 cells: the far sides' coordinates x0 + nx dx carry a rounding that a
+  // body's edge given in the scene does not.
+  const double tx = 1e-12 * grid.dx, tz = 1e-12 * grid.dz;
+  auto atWall = [&](Vec2 p, Vec2& q) {
+    if (walls[0] && p.x >= x0 - tx) q.x = p.x <= x0 + tx ? p.x : std::max(q.x, x0);
+    if (walls[1] && p.x <= x1 + tx) q.x = p.x >= x1 - tx ? p.x : std::min(q.x, x1);
+    if (walls[2] && p.z >= z0 - tz) q.z = p.z <= z0 + tz ? p.z : std::max(q.z, z0);
+    if (walls[3] && p.z <= z1 + tz) q.z = p.z >= z1 - tz ? p.z : std::min(q.z, z1);
   };
   std::atomic<long> bad{-1};
   for (std::size_t l = 0; l < lines_.size(); ++l) {
@@ -88,10 +89,10 @@ void MarkerSet::advect(const GridSpec& grid, const double* vx, const double* vz,
       // Explicit midpoint rule along the path in the (time-centred) velocity field.
       Vec2 half = p + (0.5 * dt) * v(p);
       if (rz) half.x = onAxis ? 0.0 : std::max(half.x, 0.0);
-      if (anyWall) half = inside(half);
+      if (anyWall) atWall(p, half);
       Vec2 q = p + dt * v(half);
       if (rz) q.x = onAxis ? 0.0 : std::max(q.x, 0.0);
-      if (anyWall) q = inside(q);
+      if (anyWall) atWall(p, q);
       if (std::isfinite(q.x) && std::isfinite(q.z))
         pts[static_cast<std::size_t>(j)] = q;
       else

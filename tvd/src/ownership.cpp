@@ -28,11 +28,11 @@ void Ownership::setUp(const cases::Scene& scene, const CellVolumes& cells,
   const auto n = static_cast<std::size_t>(g.cells());
   markers_ = MarkerSet::fromBodies(scene, g);
   throwIfStopRequested("the TVD marker lines");
-  // The conservative interfaces: the markers mirror at the walls (MarkerSet::advect,
-  // Options::markerWallMirror); the study's whole-cell mode keeps the clamped field.
+  // The conservative interfaces: markers on a wall stay on it (MarkerSet::advect,
+  // Options::markerWalls); the study's whole-cell mode keeps its motion.
   for (int side = 0; side < 4; ++side)
     walls_[static_cast<std::size_t>(side)] =
-        cutCells_ && wallMirror_ &&
+        cutCells_ && markerWalls_ &&
         scene.domain.boundary[static_cast<std::size_t>(side)] == cases::Boundary::Wall;
   if (cutCells_) {
     // The cut cells take their interface areas from the face apertures and never change owners

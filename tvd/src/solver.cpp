@@ -52,7 +52,7 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
   if (markersOn_) {
     std::array<bool, 4> open{};
     ownership_.setCutCells(cut_);
-    ownership_.setWallMirror(options_.markerWallMirror);
+    ownership_.setMarkerWalls(options_.markerWalls);
     ownership_.setUp(scene, cellVolumes_, objectMaterial_, bodyStates_,
                      static_cast<int>(materials_.size()), threads_);
     // docs/tvd.md, "Outflow sides: no re-entry" (Options::closedOutflow).

@@ -145,7 +145,7 @@ double meetingPlaneTension(bool phases, double cfl, bool wallMirror = true) {
   s.bodies = {body("flyer", 0, cases::Rect{0.0, width, 0.0, d}, {rho0, {0.0, -v0}, 0.0}),
               body("target", 0, cases::Rect{0.0, width, -2 * d, 0.0}, {rho0, {}, 0.0})};
   Options options;
-  options.markerWallMirror = wallMirror;
+  options.markerWalls = wallMirror;
   TvdSolver solver(s, options);
   const GridSpec& g = solver.grid();
   double pmin = 0.0;
@@ -169,7 +169,7 @@ double meetingPlaneTension(bool phases, double cfl, bool wallMirror = true) {
 // conservative mode's phases carry the same elastic state. Bound 3 %: one material's own
 // distance from acoustics is 1 % (fronts smeared over a few cells), and the two modes' schemes
 // differ (cut-cell Heun sweeps, marker-measured fractions at the flyer's contact). With the
-// markers' earlier velocity field (Options::markerWallMirror = false: clamped at the outermost
+// markers' earlier velocity field (Options::markerWalls = false: clamped at the outermost
 // cell centres, not mirrored at the walls) the phases' side markers move off the walls with the
 // wall cells' velocity, uniaxial strain's lateral tension pulls the target off them, and the
 // meeting plane's tension is relieved (0.81 GPa at CFL 0.4; docs/strength.md, "TVD fracture").
@@ -210,7 +210,7 @@ double wallTension(bool phases, double cfl, bool mirror) {
   const double rho0 = eos::referenceDensity(al.eos);
   s.bodies = {body("plate", 0, cases::Rect{0.0, width, 0.0, d}, {rho0, {0.0, -v0}, 0.0})};
   Options o;
-  o.markerWallMirror = mirror;  // false: the markers' earlier field, clamped at the walls
+  o.markerWalls = mirror;  // false: the markers' earlier field, clamped at the walls
   TvdSolver solver(s, o);
   const GridSpec& g = solver.grid();
   double pmin = 0.0;

@@ -1,6 +1,8 @@
 //! @file Marker advection and redistribution in flows with known behaviour.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -184,6 +186,78 @@ TEST(MarkerAdvect, SingleVortexReversalConvergesSecondOrder) {
   }
   // Markers track the perimeter: the spiral is ~6x the circle's perimeter at its longest.
   EXPECT_LT(r[2].maxMarkers, 8 * r[2].start);
+}
+
+// A reflecting wall mirrors the cells (the solver's ghost = the cell with the normal velocity
+// negated), so the marker velocity continues the normal component oddly across it, as on the
+// r-z axis (advect's oddWalls; the solver uses the nearest values with the pinning below,
+// docs/markers.md). A normal velocity linear in the distance to the wall, v_n = a (n - n_wall),
+// with a constant tangential one c, is then interpolated exactly also between the wall and the first
+// cell centre (the ghost's -v_n(first centre) is v_n half a cell beyond the wall), where the
+// nearest-value continuation gave v_n(first centre) instead. One midpoint step maps the distance
+// d to the wall to d (1 + a dt + (a dt)^2 / 2) exactly and the tangential coordinate by c dt;
+// the marker on the wall stays on it, after many steps too. Bound: rounding of coordinates
+// below 1 cm (a few ulp); the nearest values are off by a (0.5 dx - d) dt, 8e-5 cm for the
+// marker 0.1 cells from the wall.
+TEST(MarkerAdvect, WallContinuesTheNormalVelocityOddly) {
+  const GridSpec g = makeGrid(10, 12, 0.1, -0.2, 0.01);
+  const double x1 = g.x0 + g.nx * g.dx, z1 = g.z0 + g.nz * g.dz;  // as advect computes them
+  const double c = 0.3, dt = 0.01;
+  const std::array<double, 5> dist{0.0, 0.1 * g.dx, 0.3 * g.dx, 0.45 * g.dx, 1.3 * g.dx};
+  for (int side = 0; side < 4; ++side)
+    for (const double a : {2.0, -2.0}) {
+      const bool alongX = side < 2;  // the wall's normal is x
+      const double wall = side == 0 ? g.x0 : side == 1 ? x1 : side == 2 ? g.z0 : z1;
+      const double inward = side % 2 == 0 ? 1.0 : -1.0;
+      // v_n = a (n - n_wall): the flow leaves (a > 0) or approaches (a < 0) the wall.
+      Field f(g, [&](Vec2 p) {
+        const double n = alongX ? p.x : p.z;
+        const double vn = a * (n - wall);
+        return alongX ? Vec2{vn, c} : Vec2{c, vn};
+      });
+      MarkerLine line{0, true, {}};
+      const double t0 = 0.13;  // tangential coordinate, inside the grid either way
+      for (std::size_t j = 0; j < dist.size(); ++j) {
+        const double n = wall + inward * dist[j], t = t0 + 0.01 * static_cast<double>(j);
+        line.points.push_back(alongX ? Vec2{n, t - 0.3} : Vec2{t, n});
+      }
+      std::array<bool, 4> walls{};
+      walls[static_cast<std::size_t>(side)] = true;
+      auto one = MarkerSet::fromLines({line}, 1, 0.5, Geometry::Planar);
+      auto nearest = one;
+      one.advect(g, f.vx.data(), f.vz.data(), dt, walls, {}, true);
+      nearest.advect(g, f.vx.data(), f.vz.data(), dt, walls);
+      const double grow = 1.0 + a * dt + 0.5 * (a * dt) * (a * dt);
+      double worst = 0.0, worstNearest = 0.0;
+      for (std::size_t j = 0; j < dist.size(); ++j) {
+        const Vec2 p0 = line.points[j], p = one.lines()[0].points[j];
+        const Vec2 q = nearest.lines()[0].points[j];
+        const double n0 = alongX ? p0.x : p0.z, n = alongX ? p.x : p.z, nq = alongX ? q.x : q.z;
+        const double t = alongX ? p.z - p0.z : p.x - p0.x;
+        const double expected = wall + (n0 - wall) * grow;
+        worst = std::max({worst, std::abs(n - expected), std::abs(t - c * dt)});
+        if (j < 4) worstNearest = std::max(worstNearest, std::abs(nq - expected));
+        if (j == 0) {
+          EXPECT_EQ(n, wall) << "side " << side;
+        }
+      }
+      EXPECT_LT(worst, 1e-15) << "side " << side << " a " << a;
+      EXPECT_GT(worstNearest, 1e-5) << "side " << side;  // the test tells the two forms apart
+      // Many steps, also with the nearest values (the solver's default, oddWalls off): the
+      // marker on the wall stays on it, none crosses it.
+      for (int s = 0; s < 50; ++s) {
+        one.advect(g, f.vx.data(), f.vz.data(), dt, walls, {}, true);
+        nearest.advect(g, f.vx.data(), f.vz.data(), dt, walls);
+      }
+      for (const Vec2& p : nearest.lines()[0].points)
+        EXPECT_GE(inward * ((alongX ? p.x : p.z) - wall), 0.0);
+      EXPECT_EQ(alongX ? nearest.lines()[0].points[0].x : nearest.lines()[0].points[0].z, wall);
+      const auto& pts = one.lines()[0].points;
+      EXPECT_EQ(alongX ? pts[0].x : pts[0].z, wall) << "side " << side;
+      for (const Vec2& p : pts) EXPECT_GE(inward * ((alongX ? p.x : p.z) - wall), 0.0);
+      std::printf("[wall side %d, a %+.0f] max error %.1e cm (nearest values: %.1e)\n", side, a,
+                  worst, worstNearest);
+    }
 }
 
 }  // namespace

@@ -76,16 +76,19 @@ class MarkerSet {
   //! step. Outside the cell-centre range
   //! the nearest values are used, except at the r-z axis where vx is reflected oddly (vx = 0 on
   //! the axis). In r-z, markers on the axis keep x = 0 and no marker goes to x < 0.
-  //! `walls` (xmin, xmax, zmin, zmax; the conservative interfaces' walls) continues the normal
-  //! component oddly across those sides as well, so it vanishes on the wall, and keeps every
-  //! marker inside them: a body's side on a wall stays on it (docs/strength.md, "TVD with
-  //! interfaces": without it the side's markers moved off the wall with the wall cell's
-  //! velocity, and a body in lateral tension came off the wall).
+  //! `walls` (xmin, xmax, zmin, zmax; the conservative interfaces' walls): a marker on a wall
+  //! keeps its normal coordinate and one inside does not cross it, so a body's side on a wall
+  //! stays on it (docs/markers.md; without it the side's markers moved off the wall with the
+  //! wall cell's velocity, and a body in lateral tension came off the wall). `oddWalls` also
+  //! continues the normal velocity oddly across those sides (zero on the wall, as at the axis):
+  //! off in the solver, since it made the energy floors take a quarter of the energy of a
+  //! body driven onto a wall (docs/markers.md).
   //! `open` (sides xmin, xmax, zmin, zmax): a marker beyond an open (outflow) side stays where
   //! it is: what it bounded has left and must not be brought back by the edge cells' velocity
   //! (the cut-cell mode, docs/tvd.md "Outflow sides: no re-entry"); none open by default.
   void advect(const GridSpec& grid, const double* vx, const double* vz, double dt,
-              std::array<bool, 4> walls = {}, std::array<bool, 4> open = {});
+              std::array<bool, 4> walls = {}, std::array<bool, 4> open = {},
+              bool oddWalls = false);
 
   //! Keeps every segment between minCells*dx and maxCells*dx (defaults 0.5 and 2 times the
   //! spacing: 0.25 and 1.0 cells for the default 0.5-cell spacing): inserts markers on long

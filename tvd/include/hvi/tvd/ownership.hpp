@@ -52,8 +52,8 @@ class Ownership {
   //! Cut-cell mode with Options::closedOutflow: the outflow sides (xmin, xmax, zmin, zmax)
   //! beyond which the marker lines stay put (MarkerSet::advect); none by default.
   void setOpenSides(std::array<bool, 4> open) { open_ = open; }
-  //! Cut cells: the markers' velocity field mirrors at walls (Options::markerWallMirror).
-  void setWallMirror(bool on) { wallMirror_ = on; }
+  //! Cut cells: markers on a wall stay on it, none crosses one (Options::markerWalls).
+  void setMarkerWalls(bool on) { markerWalls_ = on; }
   //! The marker step of the cut-cell mode: moves and redistributes the lines, rebuilds the
   //! owner and normal arrays and the fractions; the flow state is not touched. The material
   //! and the lines lie within grid rows [rowLo, rowHi), at least two rows from their ends (or
@@ -127,8 +127,8 @@ class Ownership {
   std::vector<double> normalLength_;  // marker length per cell
   bool cutCells_ = false;
   std::array<bool, 4> open_{};  // cut-cell mode: the outflow sides (MarkerSet::advect)
-  bool wallMirror_ = true;
-  std::array<bool, 4> walls_{};   //!< xmin, xmax, zmin, zmax mirror the markers (cut cells)
+  bool markerWalls_ = true;
+  std::array<bool, 4> walls_{};   //!< xmin, xmax, zmin, zmax hold the markers (cut cells)
   std::vector<double> fraction_;  // cut-cell mode: object fractions per cell
 };
 

@@ -44,11 +44,11 @@ struct Options {
   //! through its top side). Off because TvdCutOutflow's r-z scene then stops (open). The scene
   //! key tvd.outflow = "no_reentry" sets it.
   bool closedOutflow = false;
-  //! Cut-cell mode: the markers' velocity field continues the normal component oddly across a
-  //! wall (zero on it) and keeps markers inside, so a body's side on a wall stays there
-  //! (docs/strength.md, "TVD fracture": the spall scene's lateral tension pulled the phases off
-  //! the walls). false: the earlier field, clamped to the outermost cell centres.
-  bool markerWallMirror = true;
+  //! Cut-cell mode: a marker on a wall keeps its normal coordinate and none crosses a wall, so a
+  //! body's side on a wall stays there (docs/markers.md; the spall scene's lateral tension
+  //! pulled the phases off the walls, docs/strength.md "TVD fracture"). false: the earlier
+  //! motion with the field clamped to the outermost cell centres.
+  bool markerWalls = true;
 };
 
 //! Eulerian TVD solver (the scheme is specified in docs/tvd.md):
