@@ -172,6 +172,53 @@ TEST(StrengthDamage, JohnsonCookFailureStrainByHand) {
   EXPECT_NEAR(f.failureStrain(1.0 / 3.0, 1e-3, 0.5), 3.970971, 1e-6);
 }
 
+// grownDamage, the one growth step both solvers call (docs/strength.md, "Damage and spall"),
+// against the hand values of its two models.
+TEST(StrengthDamage, GrownDamageByHand) {
+  // Grady-Kipp, element size 0.01 cm: V = 1e-6 cm^3, eps_min = 0.0278256 (above). rho 2.7,
+  // c 0.5 (K = 0.675), G = 0.27: E = 9KG / (3K + G) = 0.714706. Uniform tension P = -0.03, s = 0:
+  // sigma_1 = 0.03, eps = 0.041975 > eps_min, so the crack grows: c_g = 0.4 c_L = 0.24 (c_L 0.6),
+  // R = 0.005, dt 0.01: D^1/3 = 0.48, D = 0.110592.
+  hs::Material gk;
+  gk.damage = hs::GradyKipp{.k = 1e20, .m = 9.0, .crackSpeed = 0.4};
+  const hs::YieldInput in{};
+  const hs::ReturnResult elastic{};
+  EXPECT_NEAR(hs::grownDamage(gk, 0.0, 0.01, -0.03, 2.7, 0.5, 0.27, 0.6, 0.01, in, {}, elastic),
+              0.110592, 1e-12);
+  // Half the tension: eps = 0.020988 < eps_min, no growth.
+  EXPECT_EQ(hs::grownDamage(gk, 0.0, 0.01, -0.015, 2.7, 0.5, 0.27, 0.6, 0.01, in, {}, elastic),
+            0.0);
+  // Damaged D = 0.5 carries the strain of an intact element at twice the stress (Benz and
+  // Asphaug's eps = sigma_1 / ((1 - D) E)): 0.041975 again, so over dt 0.001 it grows to
+  // (0.5^(1/3) + 0.048)^3 = 0.5963; over dt 0.01 it would pass 1 and is capped there.
+  EXPECT_NEAR(hs::grownDamage(gk, 0.5, 0.001, -0.015, 2.7, 0.5, 0.27, 0.6, 0.01, in, {}, elastic),
+              std::pow(std::cbrt(0.5) + 0.048, 3.0), 1e-12);
+  EXPECT_EQ(hs::grownDamage(gk, 0.5, 0.01, -0.015, 2.7, 0.5, 0.27, 0.6, 0.01, in, {}, elastic),
+            1.0);
+  // Compression: no growth.
+  EXPECT_EQ(hs::grownDamage(gk, 0.2, 0.01, 0.03, 2.7, 0.5, 0.27, 0.6, 0.01, in, {}, elastic), 0.2);
+
+  // Johnson-Cook failure, OFHC copper (its JC yield gives T*): uniaxial tension sigma along z,
+  // s = sigma (-1/3, 2/3, 0), P = -sigma / 3, so sigma* = -P / sigma_eq = 1/3; 1000/s and
+  // T* = 0.5 give eps_f = 3.970971 (above); a plastic increment 0.1 adds 0.1 / eps_f.
+  const hs::Material cu = hs::findPreset("copper_ofhc")->material;
+  const auto& jc = std::get<hs::JohnsonCook>(cu.yield);
+  const double sigma = 0.003;
+  const hs::Deviator s{-sigma / 3.0, 2.0 * sigma / 3.0, 0.0};
+  const hs::YieldInput hot{.strainRate = 1e-3,
+                           .temperature = 0.5 * (jc.roomTemperature + jc.meltTemperature)};
+  EXPECT_NEAR(hs::grownDamage(cu, 0.1, 0.01, -sigma / 3.0, 8.96, 0.39, 0.46, 0.47, 0.01, hot, s,
+                              hs::ReturnResult{.plasticStrain = 0.1}),
+              0.1 + 0.1 / 3.970971, 1e-7);
+  // No plastic increment, no growth; a material without a damage model never grows.
+  EXPECT_EQ(hs::grownDamage(cu, 0.1, 0.01, -sigma / 3.0, 8.96, 0.39, 0.46, 0.47, 0.01, hot, s,
+                            elastic),
+            0.1);
+  EXPECT_EQ(hs::grownDamage(hs::Material{}, 0.3, 0.01, -0.03, 2.7, 0.5, 0.27, 0.6, 0.01, in, {},
+                            hs::ReturnResult{.plasticStrain = 0.1}),
+            0.3);
+}
+
 TEST(StrengthDamage, PrincipalStressAndDamagedPressure) {
   // s = (1, -0.5, 0.5), P = 0.2: mean 0.25, radius sqrt(0.5625 + 0.25) = 0.901388; tt = -0.5.
   EXPECT_NEAR(hs::maxPrincipalStress({1.0, -0.5, 0.5}, 0.2), 0.25 + std::sqrt(0.8125) - 0.2, 1e-15);
