@@ -211,9 +211,9 @@ TEST(StrengthDamage, GrownDamageByHand) {
                               hs::ReturnResult{.plasticStrain = 0.1}),
               0.1 + 0.1 / 3.970971, 1e-7);
   // No plastic increment, no growth; a material without a damage model never grows.
-  EXPECT_EQ(hs::grownDamage(cu, 0.1, 0.01, -sigma / 3.0, 8.96, 0.39, 0.46, 0.47, 0.01, hot, s,
-                            elastic),
-            0.1);
+  EXPECT_EQ(
+      hs::grownDamage(cu, 0.1, 0.01, -sigma / 3.0, 8.96, 0.39, 0.46, 0.47, 0.01, hot, s, elastic),
+      0.1);
   EXPECT_EQ(hs::grownDamage(hs::Material{}, 0.3, 0.01, -0.03, 2.7, 0.5, 0.27, 0.6, 0.01, in, {},
                             hs::ReturnResult{.plasticStrain = 0.1}),
             0.3);
