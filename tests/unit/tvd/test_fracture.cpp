@@ -20,12 +20,6 @@ namespace {
 using namespace hvi::tvd::testing;
 using cases::Effect;
 
-const Field& field(const Snapshot& s, const std::string& name) {
-  for (const Field& f : s.fields)
-    if (f.name == name) return f;
-  throw std::runtime_error("no field " + name);
-}
-
 cases::Scene fractureScene(double xmin, double xmax, double zmin, double zmax, double h,
                            Geometry g = Geometry::Planar) {
   cases::Scene s = baseScene(xmin, xmax, zmin, zmax, h, g);

@@ -59,12 +59,6 @@ cases::Scene slab(double dx, int columns, double depth, double flyer, double v0,
   return s;
 }
 
-const Field& field(const Snapshot& s, const std::string& name) {
-  for (const Field& f : s.fields)
-    if (f.name == name) return f;
-  throw std::runtime_error("no field " + name);
-}
-
 // Row averages (deep end first) of -v_z and of the longitudinal stress -sigma_zz = P - s_zz.
 struct Profile {
   std::vector<double> z, velocity, stress;

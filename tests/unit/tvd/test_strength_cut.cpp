@@ -39,12 +39,6 @@ double soundSpeed(const eos::Eos& e) {
 }
 double density(const eos::Eos& e) { return eos::referenceDensity(e); }
 
-const Field& field(const Snapshot& s, const std::string& name) {
-  for (const Field& f : s.fields)
-    if (f.name == name) return f;
-  throw std::runtime_error("no field " + name);
-}
-
 cases::Scene cutScene(double xmin, double xmax, double zmin, double zmax, double h,
                       Geometry g = Geometry::Planar) {
   cases::Scene s = baseScene(xmin, xmax, zmin, zmax, h, g);

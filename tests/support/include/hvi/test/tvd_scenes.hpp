@@ -2,6 +2,7 @@
 #pragma once
 #include <cmath>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -72,6 +73,13 @@ inline std::vector<double> phaseMasses(const TvdSolver& s) {
       m[static_cast<std::size_t>(p)] +=
           ph.q[static_cast<std::size_t>(p)].rho[static_cast<std::size_t>(c)] * s.cellVolume(c);
   return m;
+}
+
+//! A snapshot's field by name (throws if the snapshot lacks it).
+inline const Field& field(const Snapshot& s, const std::string& name) {
+  for (const Field& f : s.fields)
+    if (f.name == name) return f;
+  throw std::runtime_error("no field " + name);
 }
 
 }  // namespace hvi::tvd::testing
