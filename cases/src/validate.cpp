@@ -151,10 +151,9 @@ void checkSphFill(const TableReader& root, const Scene& scene, const Sources& sr
   }
 }
 
-// Without marker lines the TVD solver keeps one material (its cells hold no material index).
-void checkTvdMaterials(const TableReader& root, const Scene& scene, const Sources& src) {
-  // No re-entry is a rule of the cut cells' phase faces (docs/tvd.md, "Outflow sides: no
-  // re-entry"): the conservative interface mode only.
+// tvd.outflow = "no_reentry" is a rule of the cut cells' phase faces (docs/tvd.md, "Outflow
+// sides: no re-entry"): the conservative interface mode only.
+void checkTvdOutflow(const TableReader& root, const Scene& scene) {
   if (scene.tvd.outflow == OutflowMode::NoReentry &&
       !(scene.has(Effect::MaterialInterfaces) &&
         scene.tvd.interfaces == InterfaceMode::Conservative))
@@ -164,6 +163,10 @@ void checkTvdMaterials(const TableReader& root, const Scene& scene, const Source
                "scene does not run",
                "tvd.outflow = \"open\", or effects with \"material_interfaces\" and "
                "tvd.interfaces = \"conservative\"");
+}
+
+// Without marker lines the TVD solver keeps one material (its cells hold no material index).
+void checkTvdMaterials(const TableReader& root, const Scene& scene, const Sources& src) {
   if (scene.has(Effect::MaterialInterfaces)) return;
   for (std::size_t i = 1; i < scene.bodies.size(); ++i) {
     if (scene.bodies[i].material == scene.bodies[0].material) continue;
@@ -400,7 +403,10 @@ void validateScene(const TableReader& root, const Scene& scene, const Sources& s
              "bodies that touch but do not overlap");
   checkResolution(root, scene, src);
   if (scene.solver == SolverKind::Sph) checkSphFill(root, scene, src);
-  if (scene.solver == SolverKind::Tvd) checkTvdMaterials(root, scene, src);
+  if (scene.solver == SolverKind::Tvd) {
+    checkTvdMaterials(root, scene, src);
+    checkTvdOutflow(root, scene);
+  }
   checkTimeResolution(root, scene);
   checkFeatures(root, scene);
   checkStrength(root, scene);
