@@ -92,6 +92,7 @@ class Run {
         checkpointTime_ = solver_->time();
         checkpointStep_ = solver_->step();
         pvd_.resumeFrom(solver_->time());
+        progress.resumeAt(solver_->time());
         // Written only now: a refused restart (another scene) must not replace the folder's
         // scene.toml.
         writeOutput([&] { writeTextAtomically(opts_.out / "scene.toml", sceneToml_); });

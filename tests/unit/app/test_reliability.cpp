@@ -23,6 +23,7 @@
 #include "hvi/apps/output_folder.hpp"
 #include "hvi/common/atomic_file.hpp"
 #include "hvi/common/error.hpp"
+#include "hvi/common/progress.hpp"
 #include "hvi/common/stop_flag.hpp"
 #include "hvi/io/checkpoint.hpp"
 #include "hvi/io/output.hpp"
@@ -373,6 +374,14 @@ TEST(OutputFolder, FinalProgressLineShowsTheLastStep) {
   const auto last = err.rfind("dt = ");
   ASSERT_NE(last, std::string::npos) << err;
   EXPECT_NE(err.substr(last, 17), "dt = 0.000e+00 us") << err;
+}
+
+// A run restarted at 32.5 us of 37 us that took 100 s for its first 0.5 us has 800 s left at
+// that rate; measured from t = 0 the same line said 12.5 s (the ETA of the restarted shield run).
+TEST(Progress, EtaAfterARestartUsesTheRateSinceTheRestart) {
+  EXPECT_DOUBLE_EQ(Progress::eta(32.5, 37.0, 33.0, 100.0), 800.0);
+  EXPECT_NEAR(Progress::eta(0.0, 37.0, 33.0, 100.0), 12.12, 0.01);
+  EXPECT_EQ(Progress::eta(32.5, 37.0, 32.5, 5.0), 0.0);  // no progress yet: no estimate
 }
 
 TEST(OutputFolder, UnknownCommandIsNamed) {

@@ -6,8 +6,10 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
 
 #include "helpers.hpp"
+#include "hvi/common/error.hpp"
 
 namespace hvi::tvd {
 namespace {
@@ -192,8 +194,8 @@ TEST(MarkerAdvect, SingleVortexReversalConvergesSecondOrder) {
 // negated), so the marker velocity continues the normal component oddly across it, as on the
 // r-z axis (advect's oddWalls; the solver uses the nearest values with the pinning below,
 // docs/markers.md). A normal velocity linear in the distance to the wall, v_n = a (n - n_wall),
-// with a constant tangential one c, is then interpolated exactly also between the wall and the first
-// cell centre (the ghost's -v_n(first centre) is v_n half a cell beyond the wall), where the
+// with a constant tangential one c, is then interpolated exactly also between the wall and the
+// first cell centre (the ghost's -v_n(first centre) is v_n half a cell beyond the wall), where the
 // nearest-value continuation gave v_n(first centre) instead. One midpoint step maps the distance
 // d to the wall to d (1 + a dt + (a dt)^2 / 2) exactly and the tangential coordinate by c dt;
 // the marker on the wall stays on it, after many steps too. Bound: rounding of coordinates
@@ -258,6 +260,28 @@ TEST(MarkerAdvect, WallContinuesTheNormalVelocityOddly) {
       std::printf("[wall side %d, a %+.0f] max error %.1e cm (nearest values: %.1e)\n", side, a,
                   worst, worstNearest);
     }
+}
+
+// A velocity field that flings part of a line across the grid (one cell moving at 10^4 cm/us)
+// would make the redistribution fill the stretched segments with points: 10^6 cells of line at
+// the 0.5-cell spacing, against the 16 per cell (+65536) a material boundary can need on this
+// 20x20 grid. The run stops before any point is made, naming the line, and the set is unchanged.
+TEST(MarkerAdvect, ALineFlungAcrossTheGridStopsBeforeFillingMemory) {
+  const GridSpec g = makeGrid(20, 20, 0.0, 0.0, 0.01);
+  auto set = MarkerSet::fromShapes({cases::Disk{{0.1, 0.1}, 0.05}}, g, 0.5, Geometry::Planar);
+  set.redistribute(g);  // an ordinary line passes
+  Field f(g, [&](Vec2 p) {
+    return p.x > 0.14 && p.x < 0.15 ? Vec2{0.0, 1.0e4} : Vec2{};  // one column of cells
+  });
+  set.advect(g, f.vx.data(), f.vz.data(), 1.0);
+  const std::size_t n = set.size();
+  try {
+    set.redistribute(g);
+    ADD_FAILURE() << "no error for a line stretched across 10^6 cells";
+  } catch (const SimulationError& e) {
+    EXPECT_NE(std::string(e.what()).find("object 0"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(set.size(), n);
 }
 
 }  // namespace

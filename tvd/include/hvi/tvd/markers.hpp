@@ -148,6 +148,9 @@ class MarkerSet {
   void read(std::istream&);         //!< throws InputError if the stream is not a MarkerSet
 
  private:
+  //! Throws SimulationError if the redistribution (spacing h within [minLen, maxLen]) would
+  //! give the lines more than a few points per grid cell.
+  void checkGrowth(const GridSpec& grid, double h, double minLen, double maxLen) const;
   void rasterizeInto(const GridSpec& grid, std::vector<int>& owner, std::vector<Vec2>& normal,
                      double* fraction) const;
 

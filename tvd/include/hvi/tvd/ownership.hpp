@@ -98,7 +98,7 @@ class Ownership {
   };
   // Moves the lines with the time-centred velocity and redistributes them (both modes).
   void advanceLines(const Conserved& U, double dt, int rowLo, int rowHi);
-  void centredVelocity(const Conserved& U, int rowLo, int rowHi);
+  void centredVelocity(const Conserved& U, double dt, int rowLo, int rowHi);
   void extendIntoVacuum(int layers, int rowLo, int rowHi);
   [[nodiscard]] Change fillFor(long cell, int to, const Conserved& U,
                                std::vector<ObjectSum>& sums) const;
