@@ -239,6 +239,7 @@ double TvdSolver::advance(double tStop) {
   }
   // Strang-alternated splitting: x then z on even steps, z then x on odd steps.
   if (cut_) {
+    limitThinVelocities(dt);
     sweepCut(step_ % 2 == 0 ? 0 : 1, dt);
     sweepCut(step_ % 2 == 0 ? 1 : 0, dt);
     // The markers move with the mixture velocity (one phase: its own state, no copy needed).

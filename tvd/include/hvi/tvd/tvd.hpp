@@ -153,6 +153,9 @@ class TvdSolver final : public Solver {
                        double weight);
   void measurePhases();  // phases_ geometry from the marker lines (cut-cell mode)
   double signalSpeedCut(double* vx, double* vz, long* worstCell) const;
+  // Cut cells: each velocity component of a phase cell below the time-step density limited to
+  // one cell per step (docs/tvd.md, "Thin cells faster than the step"), booked under floors.
+  void limitThinVelocities(double dt);
   // Largest signal speed over the material cells (and the check that each is physical); with
   // vx/vz given, each material cell's velocity is stored there (the markers' start velocity).
   double signalSpeedPass(double* vx, double* vz, long* worstCell) const;
