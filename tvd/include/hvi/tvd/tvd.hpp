@@ -206,7 +206,7 @@ class TvdSolver final : public Solver {
   Ownership ownership_;  // markers only
   bool cut_ = false;     // conservative cut-cell interfaces (markers only)
   Phases phases_;        // cut-cell mode: per material fractions, apertures and states
-  std::vector<std::vector<double>> alphaOld_;  // cut-cell mode: fractions before the marker step
+  OldFractions alphaOld_;  // cut-cell mode: fractions before the marker step (nonzero ones)
   long relaxations_ = 0;                        // cut-cell mode: relaxed cell-stages (diagnostic)
   long mixings_ = 0;                            // cut-cell mode: deficits mixed (diagnostic)
   long orphans_ = 0;                            // cut-cell mode: cells kept off the geometry
