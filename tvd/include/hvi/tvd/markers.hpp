@@ -172,9 +172,9 @@ class MarkerSet {
   double tinyLoopCells_ = 0.05;
 
   // Scratch reused between calls so that the per-step calls do not allocate.
-  mutable std::vector<double> acc_;        // per-object coverage accumulation over its bounding box
-  mutable std::vector<double> best_;       // largest object fraction so far, per cell
-  mutable std::vector<double> total_;      // sum of object fractions, then marker length, per cell
+  mutable std::vector<double> acc_;    // per-object coverage accumulation over its bounding box
+  mutable std::vector<double> best_;   // largest object fraction so far, per cell
+  mutable std::vector<double> total_;  // sum of object fractions, then marker length, per cell
   mutable std::vector<double*> objectFraction_;  // each object's fraction array
   std::vector<Vec2> scratchPoints_;
   //! A crossing of a grid line by a segment (faceApertures): position along the line (cells),

@@ -55,7 +55,8 @@ class Ownership {
   //! Cut cells: markers on a wall stay on it, none crosses one (Options::markerWalls).
   void setMarkerWalls(bool on) { markerWalls_ = on; }
   //! The marker step of the cut-cell mode: moves and redistributes the lines, rebuilds the
-  //! owner and normal arrays and the fractions; the flow state is not touched. The material
+  //! owner array and the fractions (into the buffers lent, lendFractions); the flow state is
+  //! not touched. The material
   //! and the lines lie within grid rows [rowLo, rowHi), at least two rows from their ends (or
   //! at the grid's edge), and so does every velocity this mode ever set (Phases::rowLo): only
   //! those rows are visited.
@@ -139,7 +140,7 @@ class Ownership {
   bool cutCells_ = false;
   std::array<bool, 4> open_{};  // cut-cell mode: the outflow sides (MarkerSet::advect)
   bool markerWalls_ = true;
-  std::array<bool, 4> walls_{};   //!< xmin, xmax, zmin, zmax hold the markers (cut cells)
+  std::array<bool, 4> walls_{};  //!< xmin, xmax, zmin, zmax hold the markers (cut cells)
   std::vector<std::vector<double>> fraction_;  // cut-cell mode: object fractions per cell
 };
 
