@@ -49,9 +49,10 @@ void checkAxisymmetric(const TableReader& b, const Body& body, double tol) {
 // energy's pair data stored (16 B more per slot) and its own per-particle arrays; ~100 B per TVD cell
 // (conserved state, 32 B, and a snapshot's fields, 56 B, at an output; the sweep buffers are per
 // line and thread: issue 17, measured 89 B marginal and 94-100 B per cell on 2-4 million cells),
-// ~390 B per TVD cell with marker lines and two bodies, ~490 B with three (about 100 B per body:
-// its state, fractions, working and old fractions, four apertures; issue 13, docs/tvd.md
-// "Threading and memory"), so the cap below holds ~12 GiB for three bodies. The
+// ~340 B per TVD cell with marker lines and two bodies, ~450 B with three (about 80 B per body:
+// its state, fraction, working fraction, four apertures; issue 17 goal 3, docs/tvd.md
+// "Threading and memory"; ~710 B with strength), so the cap below holds ~11 GiB for three
+// bodies without strength. The
 // caps keep a run near 12 GiB, under the 24 GiB of the machines this project targets, and keep
 // item counts far from integer overflow; a scene beyond them is refused before anything is
 // allocated.

@@ -73,7 +73,10 @@ void TvdSolver::writeCheckpoint(std::ostream& out) const {
   putConserved(w, U_);
   if (markersOn_) {
     w.array(ownership_.owner());
-    w.array(ownership_.normal());
+    if (cut_)
+      w.array(ownership_.cutCellNormals());
+    else
+      w.array(ownership_.normal());
     w.array(ownership_.targets());
     ownership_.markers().write(out);  // its own record, checked by itself
   }

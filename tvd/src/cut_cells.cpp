@@ -22,25 +22,17 @@ void TvdSolver::initialiseCut(const cases::Scene& scene) {
   measurePhases();
   const long cells = grid_.cells();
   const auto n = static_cast<std::size_t>(cells);
-  const auto& frac = ownership_.fractions();
-  const std::size_t objects = objectMaterial_.size();
+  // Phase p is body p (one material per body in this mode, TvdSolver's constructor), and a
+  // phase is present only where its body's fraction is (the fit only scales fractions down).
   for (std::size_t c = 0; c < n; ++c) {
     for (int p = 0; p < M; ++p) {
       const double a = phases_.alpha[static_cast<std::size_t>(p)][c];
       if (!(a >= kPhaseAbsent)) continue;
-      std::size_t best = objects;
-      double bestF = 0.0;
-      for (std::size_t o = 0; o < objects; ++o)
-        if (objectMaterial_[o] == p && frac[o * n + c] > bestF) {
-          bestF = frac[o * n + c];
-          best = o;
-        }
-      if (best == objects) continue;
-      addState(phases_.q[static_cast<std::size_t>(p)], c, stateAtCentre(scene, best, c), a);
+      addState(phases_.q[static_cast<std::size_t>(p)], c,
+               stateAtCentre(scene, static_cast<std::size_t>(p), c), a);
     }
   }
   volumeFresh_ = true;
-  alphaOld_ = phases_.alpha;  // sized once: each step swaps the two
   phases_.mixture(U_);
 }
 

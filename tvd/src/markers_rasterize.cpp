@@ -88,13 +88,17 @@ void accumulate(const std::vector<MarkerLine>& lines, int object, const GridSpec
 
 void MarkerSet::rasterize(const GridSpec& grid, std::vector<int>& owner,
                           std::vector<Vec2>& normal) const {
-  rasterizeInto(grid, owner, normal, nullptr);
+  rasterizeInto(grid, owner, &normal, nullptr);
 }
 
 void MarkerSet::rasterize(const GridSpec& grid, std::vector<int>& owner, std::vector<Vec2>& normal,
                           std::vector<double>& fraction) const {
   fraction.assign(static_cast<std::size_t>(objects_) * static_cast<std::size_t>(grid.cells()), 0.0);
-  rasterizeInto(grid, owner, normal, fraction.data());
+  objectFraction_.resize(static_cast<std::size_t>(objects_));
+  for (int obj = 0; obj < objects_; ++obj)
+    objectFraction_[static_cast<std::size_t>(obj)] =
+        fraction.data() + static_cast<long>(obj) * grid.cells();
+  rasterizeInto(grid, owner, &normal, objectFraction_.data());
 }
 
 void MarkerSet::rasterize(const GridSpec& grid, std::vector<int>& owner, std::vector<Vec2>& normal,
@@ -102,39 +106,69 @@ void MarkerSet::rasterize(const GridSpec& grid, std::vector<int>& owner, std::ve
   const long cells = grid.cells();
   const auto size = static_cast<std::size_t>(objects_) * static_cast<std::size_t>(cells);
   if (fraction.size() != size) {
-    fraction.assign(size, 0.0);
-  } else {
-    int lo = 0, hi = 0;
-    rowSpan(grid, lo, hi);
-    if (lo < hi) {
-      rowLo = std::min(rowLo, lo);
-      rowHi = std::max(rowHi, hi);
-    }
-    rowLo = std::clamp(rowLo, 0, grid.nz);
-    rowHi = std::clamp(rowHi, rowLo, grid.nz);
-    for (int obj = 0; obj < objects_; ++obj) {
-      double* f = fraction.data() + static_cast<long>(obj) * cells;
-      std::fill(f + static_cast<long>(rowLo) * grid.nx, f + static_cast<long>(rowHi) * grid.nx,
-                0.0);
-    }
+    rasterize(grid, owner, normal, fraction);
+    return;
   }
-  rasterizeInto(grid, owner, normal, fraction.data());
+  objectFraction_.resize(static_cast<std::size_t>(objects_));
+  for (int obj = 0; obj < objects_; ++obj)
+    objectFraction_[static_cast<std::size_t>(obj)] =
+        fraction.data() + static_cast<long>(obj) * cells;
+  clearRows(grid, rowLo, rowHi);
+  rasterizeInto(grid, owner, &normal, objectFraction_.data());
+}
+
+void MarkerSet::rasterizeFractions(const GridSpec& grid, std::vector<int>& owner,
+                                   std::vector<std::vector<double>>& fraction, int rowLo,
+                                   int rowHi) const {
+  const auto cells = static_cast<std::size_t>(grid.cells());
+  bool sized = fraction.size() == static_cast<std::size_t>(objects_);
+  for (const auto& f : fraction) sized = sized && f.size() == cells;
+  objectFraction_.resize(static_cast<std::size_t>(objects_));
+  if (!sized) {
+    fraction.assign(static_cast<std::size_t>(objects_), std::vector<double>(cells, 0.0));
+  }
+  for (int obj = 0; obj < objects_; ++obj)
+    objectFraction_[static_cast<std::size_t>(obj)] = fraction[static_cast<std::size_t>(obj)].data();
+  if (sized) clearRows(grid, rowLo, rowHi);
+  rasterizeInto(grid, owner, nullptr, objectFraction_.data());
+}
+
+// The rows [rowLo, rowHi) and those the lines span, of every object's fractions (zero outside
+// them already), set to zero before the lines' coverage is written.
+void MarkerSet::clearRows(const GridSpec& grid, int rowLo, int rowHi) const {
+  int lo = 0, hi = 0;
+  rowSpan(grid, lo, hi);
+  if (lo < hi) {
+    rowLo = std::min(rowLo, lo);
+    rowHi = std::max(rowHi, hi);
+  }
+  rowLo = std::clamp(rowLo, 0, grid.nz);
+  rowHi = std::clamp(rowHi, rowLo, grid.nz);
+  for (int obj = 0; obj < objects_; ++obj) {
+    double* f = objectFraction_[static_cast<std::size_t>(obj)];
+    std::fill(f + static_cast<long>(rowLo) * grid.nx, f + static_cast<long>(rowHi) * grid.nx, 0.0);
+  }
 }
 
 void MarkerSet::rasterizeInto(const GridSpec& grid, std::vector<int>& owner,
-                              std::vector<Vec2>& normal, double* fraction) const {
+                              std::vector<Vec2>* normals, double* const* fraction) const {
   const long cells = grid.cells();
   const auto ncell = static_cast<std::size_t>(cells);
   owner.resize(ncell);
-  normal.resize(ncell);
-  best_.resize(ncell);
-  total_.resize(ncell);
-  cutLength_.resize(ncell);
+  // Without normals the owners follow from the fractions (below), and the per-cell scratch is
+  // not needed (16 B per cell less in the cut-cell mode).
+  const bool scratch = normals != nullptr || fraction == nullptr;
+  if (scratch) {
+    best_.resize(ncell);
+    total_.resize(ncell);
+  }
 #pragma omp parallel for schedule(static)
   for (long c = 0; c < cells; ++c) {
     owner[c] = -1;
-    best_[c] = 0.0;
-    total_[c] = 0.0;
+    if (scratch) {
+      best_[c] = 0.0;
+      total_[c] = 0.0;
+    }
   }
 
   for (int obj = 0; obj < objects_; ++obj) {
@@ -144,7 +178,7 @@ void MarkerSet::rasterizeInto(const GridSpec& grid, std::vector<int>& owner,
     const auto need = static_cast<std::size_t>(stride * (b.k1 - b.k0));
     if (acc_.size() < need) acc_.resize(need, 0.0);  // acc_ is all zero between uses
     accumulate(lines_, obj, grid, b, acc_);
-    double* frac = fraction ? fraction + static_cast<long>(obj) * cells : nullptr;
+    double* frac = fraction ? fraction[obj] : nullptr;
 #pragma omp parallel for schedule(static)
     for (int k = b.k0; k < b.k1; ++k) {
       double* row = acc_.data() + (k - b.k0) * stride;
@@ -157,6 +191,7 @@ void MarkerSet::rasterizeInto(const GridSpec& grid, std::vector<int>& owner,
         const double f = std::abs(s) < kRoundOff ? 0.0 : std::min(std::abs(s), 1.0);
         const long c = static_cast<long>(k) * grid.nx + i;
         if (frac) frac[c] = f;
+        if (!scratch) continue;
         total_[c] += f;
         if (f > best_[c] + kTie) {
           best_[c] = f;
@@ -168,11 +203,41 @@ void MarkerSet::rasterizeInto(const GridSpec& grid, std::vector<int>& owner,
   }
 
   // Vacuum is a candidate too: it owns the cell when it covers more than the best object.
+  if (!scratch) {
+    // The same sums and comparisons, object by object, as the scratch arrays take them: an
+    // object adds an exact 0 outside its box, which no comparison takes.
+    const int objects = objects_;
+#pragma omp parallel for schedule(static)
+    for (long c = 0; c < cells; ++c) {
+      double best = 0.0, total = 0.0;
+      int o = -1;
+      for (int obj = 0; obj < objects; ++obj) {
+        const double f = fraction[obj][c];
+        total += f;
+        if (f > best + kTie) {
+          best = f;
+          o = obj;
+        }
+      }
+      owner[c] = o >= 0 && 1.0 - total > best + kTie ? -1 : o;
+    }
+    return;
+  }
+  if (!normals) {
+#pragma omp parallel for schedule(static)
+    for (long c = 0; c < cells; ++c)
+      if (owner[c] >= 0 && 1.0 - total_[c] > best_[c] + kTie) owner[c] = -1;
+    return;
+  }
+  std::vector<Vec2>& normal = *normals;
+  normal.resize(ncell);
+  // total_ is free once the owners are known: it holds the marker length inside each cell.
+  double* cutLength = total_.data();
 #pragma omp parallel for schedule(static)
   for (long c = 0; c < cells; ++c) {
     if (owner[c] >= 0 && 1.0 - total_[c] > best_[c] + kTie) owner[c] = -1;
     normal[c] = Vec2{};
-    cutLength_[c] = 0.0;
+    cutLength[c] = 0.0;
   }
 
   // Length-weighted normals of the pieces in each cell, oriented out of the cell's owner.
@@ -189,7 +254,7 @@ void MarkerSet::rasterizeInto(const GridSpec& grid, std::vector<int>& owner,
       const Vec2 d{(pb.x - pa.x) * grid.dx, (pb.z - pa.z) * grid.dz};
       const double sign = owner[static_cast<std::size_t>(c)] == l.object ? 1.0 : -1.0;
       normal[static_cast<std::size_t>(c)] += sign * Vec2{d.z, -d.x};
-      cutLength_[static_cast<std::size_t>(c)] += norm(d);
+      cutLength[c] += norm(d);
     };
     for (std::size_t j = 0; j < n; ++j) {
       const Vec2 a = detail::toCellUnits(grid, l.points[j]);
@@ -205,7 +270,7 @@ void MarkerSet::rasterizeInto(const GridSpec& grid, std::vector<int>& owner,
   for (long c = 0; c < cells; ++c) {
     const double len = norm(normal[c]);
     // Normals that cancel (both faces of a sliver thinner than the cell) give no direction.
-    normal[c] = len > 1e-9 * cutLength_[c] && len > 0.0 ? normal[c] / len : Vec2{};
+    normal[c] = len > 1e-9 * cutLength[c] && len > 0.0 ? normal[c] / len : Vec2{};
   }
 }
 

@@ -42,7 +42,7 @@ void Ownership::setUp(const cases::Scene& scene, const CellVolumes& cells,
     // writes the start velocity of every cell of the rows that centredVelocity then reads, so
     // nothing reads an old value after it was replaced (bit for bit; 44 B per cell less,
     // docs/tvd.md "Threading and memory").
-    markers_.rasterize(g, owner_, normal_, fraction_);
+    markers_.rasterizeFractions(g, owner_, fraction_, 0, g.nz);
     for (auto* v : {&vxOld_, &vzOld_}) v->assign(n, 0.0);
   } else {
     markers_.rasterize(g, owner_, normal_);
@@ -64,7 +64,7 @@ void Ownership::startTargets(const Conserved& U) {
 void Ownership::restore(std::vector<int> owner, std::vector<Vec2> normal,
                         std::vector<double> targets, MarkerSet markers, long changes) {
   owner_.swap(owner);
-  normal_.swap(normal);
+  if (!cutCells_) normal_.swap(normal);  // the cut-cell mode keeps none (cutCellNormals)
   target_.swap(targets);
   markers_ = std::move(markers);
   changeCount_ = changes;
@@ -157,14 +157,31 @@ void Ownership::advanceLines(const Conserved& U, double dt, int rowLo, int rowHi
 void Ownership::move(const Conserved& U, double dt, int rowLo, int rowHi) {
   advanceLines(U, dt, rowLo, rowHi);
   // The fractions are zero outside the rows (the lines never left them): only those cleared.
-  markers_.rasterize(cells_.grid, owner_, normal_, fraction_, rowLo, rowHi);
+  markers_.rasterizeFractions(cells_.grid, owner_, fraction_, rowLo, rowHi);
+}
+
+std::vector<std::vector<double>> Ownership::takeFractions() {
+  std::vector<std::vector<double>> f;
+  f.swap(fraction_);
+  return f;
+}
+
+std::vector<Vec2> Ownership::cutCellNormals() const {
+  // Rasterised again as the arrays were before the mode stopped keeping them (the lines have
+  // not moved since the last rasterisation), so a checkpoint holds the same bytes.
+  // A copy of the lines, whose per-cell scratch goes with it.
+  const MarkerSet lines = markers_;
+  std::vector<int> owner;
+  std::vector<Vec2> normal;
+  lines.rasterize(cells_.grid, owner, normal);
+  return normal;
 }
 
 void Ownership::remeasure() {
   const GridSpec& g = cells_.grid;
   // The cut cells take their interface areas from the face apertures: the marker normals of
   // the whole-cell faces (interfaceNormals) are not needed.
-  markers_.rasterize(g, owner_, normal_, fraction_);
+  markers_.rasterizeFractions(g, owner_, fraction_, 0, g.nz);
 }
 
 void Ownership::update(Conserved& U, double dt, Budget& booked) {

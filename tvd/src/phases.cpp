@@ -138,19 +138,14 @@ void fitTogether(const double* const* from, double* const* to, int P, long lo, l
 
 }  // namespace
 
-void Phases::measure(const MarkerSet& markers, const std::vector<double>& fraction) {
-  const long cells = grid.cells();
+void Phases::measure(const MarkerSet& markers) {
   int lo = 0, hi = 0;
   markers.rowSpan(grid, lo, hi);
   coverRows(lo - kRowMargin, hi + kRowMargin);
-  std::vector<const double*> from(static_cast<std::size_t>(count));
   std::vector<double*> to(static_cast<std::size_t>(count));
-  for (int p = 0; p < count; ++p) {  // phase p is body (object) p
-    from[static_cast<std::size_t>(p)] =
-        fraction.data() + static_cast<std::size_t>(p) * static_cast<std::size_t>(cells);
+  for (int p = 0; p < count; ++p)  // phase p is body (object) p; fitted in place
     to[static_cast<std::size_t>(p)] = alpha[static_cast<std::size_t>(p)].data();
-  }
-  fitTogether(from.data(), to.data(), count, cellLo(), cellHi(), kPhaseAbsent);
+  fitTogether(to.data(), to.data(), count, cellLo(), cellHi(), kPhaseAbsent);
   markers.faceApertures(grid, faces, rowLo, rowHi);
   if (count < 2) return;
   // The faces of the rows (z faces: face rows rowLo .. rowHi), each side on its own.
@@ -388,13 +383,36 @@ void Phases::route(const CellVolumes& volumes, int p) {
   }
 }
 
-long Phases::repair(const CellVolumes& volumes, const std::vector<std::vector<double>>& oldAlpha) {
+void OldFractions::keep(const Phases& phases) {
+  const auto P = static_cast<std::size_t>(phases.count);
+  cell.resize(P);
+  value.resize(P);
+  for (std::size_t p = 0; p < P; ++p) {
+    cell[p].clear();  // the capacity stays: no allocation once the phases' extent is reached
+    value[p].clear();
+    const double* a = phases.alpha[p].data();
+    for (long c = phases.cellLo(); c < phases.cellHi(); ++c)
+      if (a[c] != 0.0) {
+        cell[p].push_back(c);
+        value[p].push_back(a[c]);
+      }
+  }
+}
+
+double OldFractions::at(int p, long c) const {
+  const auto& cs = cell[static_cast<std::size_t>(p)];
+  const auto it = std::lower_bound(cs.begin(), cs.end(), c);
+  return it != cs.end() && *it == c
+             ? value[static_cast<std::size_t>(p)][static_cast<std::size_t>(it - cs.begin())]
+             : 0.0;
+}
+
+long Phases::repair(const CellVolumes& volumes, const OldFractions& oldAlpha) {
   const int nx = grid.nx, nz = grid.nz;
   long orphans = 0;
   for (int p = 0; p < count; ++p) {
     settle(volumes, p);
     auto& a = alpha[static_cast<std::size_t>(p)];
-    const auto& a0 = oldAlpha[static_cast<std::size_t>(p)];
     Conserved& s = q[static_cast<std::size_t>(p)];
     double* comp[4] = {s.rho.data(), s.mx.data(), s.mz.data(), s.E.data()};
     const double* ap = a.data();
@@ -428,7 +446,8 @@ long Phases::repair(const CellVolumes& volumes, const std::vector<std::vector<do
           }
       if (best < 0) {
         if (vacated) {  // nowhere to go: the material keeps its last volume here
-          a[cc] = a0[cc] >= kPhaseAbsent ? a0[cc] : kPhaseAbsent;
+          const double a0 = oldAlpha.at(p, c);
+          a[cc] = a0 >= kPhaseAbsent ? a0 : kPhaseAbsent;
           ++orphans;
         } else if (fresh) {
           a[cc] = 0.0;  // a sliver the phase has no material near: not occupied

@@ -71,7 +71,11 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
   if (markersOn_) ownership_.startTargets(U_);
 }
 
-void TvdSolver::measurePhases() { phases_.measure(ownership_.markers(), ownership_.fractions()); }
+void TvdSolver::measurePhases() {
+  // The volume fractions are the rasterised fractions, fitted in place: no third array.
+  phases_.alpha = ownership_.takeFractions();
+  phases_.measure(ownership_.markers());
+}
 
 void TvdSolver::setUpGrid(const cases::Scene& scene) {
   const auto& p = scene.tvd;
@@ -243,13 +247,17 @@ double TvdSolver::advance(double tStop) {
     sweepCut(step_ % 2 == 0 ? 0 : 1, dt);
     sweepCut(step_ % 2 == 0 ? 1 : 0, dt);
     // The markers move with the mixture velocity (one phase: its own state, no copy needed).
+    // The old fractions, for the repair, kept where nonzero; the lines' new fractions go into
+    // their buffers (zero outside the rows, as move requires), which measurePhases takes back.
+    alphaOld_.keep(phases_);
+    ownership_.lendFractions(std::move(phases_.alpha));
+    phases_.alpha.clear();
     if (phases_.count == 1) {
       ownership_.move(phases_.q.front(), dt, phases_.rowLo, phases_.rowHi);
     } else {
       phases_.mixture(U_, false);  // the markers need the velocity; the energy comes below
       ownership_.move(U_, dt, phases_.rowLo, phases_.rowHi);
     }
-    std::swap(alphaOld_, phases_.alpha);  // the old fractions, for the repair
     measurePhases();
     orphans_ += phases_.repair(cellVolumes_, alphaOld_);
     volumeFresh_ = true;  // the first sweep of the next step starts from alpha

@@ -305,7 +305,7 @@ TEST(TvdCutCells, RoundOffMassDoesNotFlingTheMarkerLines) {
   Conserved U{std::vector<double>(cells, 0.0), std::vector<double>(cells, 0.0),
               std::vector<double>(cells, 0.0), std::vector<double>(cells, 0.0)};
   for (std::size_t c = 0; c < cells; ++c)
-    if (own.fractions()[c] > 0.0) U.rho[c] = 2.79 * own.fractions()[c];
+    if (own.fractions()[0][c] > 0.0) U.rho[c] = 2.79 * own.fractions()[0][c];
   for (std::size_t c = 0; c < cells; ++c)
     if (U.rho[c] == 0.0) {
       U.rho[c] = 1e-20;

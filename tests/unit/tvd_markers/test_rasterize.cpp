@@ -311,5 +311,48 @@ TEST(MarkerRasterize, OverlapResolvedByLargestArea) {
   EXPECT_GT(contested, 50);
 }
 
+// The cut-cell mode's form (rasterizeFractions: no normals, owners from the fractions in one
+// pass, arrays per object written in place) gives the owners and fractions of rasterize bit for
+// bit, ties included: overlapping disks (cells two objects share), a rectangle whose edge halves
+// a column of cells (the object/vacuum tie) and one whose edge meets another's (object ties).
+TEST(MarkerRasterize, FractionsFormMatchesTheFullForm) {
+  const GridSpec g = makeGrid(40, 48, 0.0, 0.0, 0.025);
+  auto shapes = [](double shift) {
+    return std::vector<cases::Shape>{cases::Disk{{0.40 + shift, 0.50}, 0.21},
+                                     cases::Disk{{0.62 + shift, 0.55}, 0.17},
+                                     cases::Rect{0.1125 + shift, 0.35 + shift, 0.05, 0.30},
+                                     cases::Rect{0.35 + shift, 0.70 + shift, 0.05, 0.30}};
+  };
+  std::vector<std::vector<double>> lent;  // the in-place buffers, kept across the two sets
+  for (const double shift : {0.0, 0.0375}) {
+    const auto set = MarkerSet::fromShapes(shapes(shift), g, 0.5, Geometry::Planar);
+    std::vector<int> owner, ownerF;
+    std::vector<Vec2> normal;
+    std::vector<double> f;
+    set.rasterize(g, owner, normal, f);
+    std::vector<std::vector<double>> fresh;
+    set.rasterizeFractions(g, ownerF, fresh, 0, g.nz);
+    int lo = 0, hi = 0;
+    set.rowSpan(g, lo, hi);
+    set.rasterizeFractions(g, ownerF, lent, lo, hi);  // the second set: over the first's
+    ASSERT_EQ(fresh.size(), 4u);
+    ASSERT_EQ(lent.size(), 4u);
+    int shared = 0;
+    for (long c = 0; c < g.cells(); ++c) {
+      const auto cc = static_cast<std::size_t>(c);
+      int objects = 0;
+      for (std::size_t o = 0; o < 4; ++o) {
+        const double full = f[o * static_cast<std::size_t>(g.cells()) + cc];
+        EXPECT_EQ(fresh[o][cc], full) << "object " << o << " cell " << c;
+        EXPECT_EQ(lent[o][cc], full) << "object " << o << " cell " << c;
+        objects += full > 0.0 ? 1 : 0;
+      }
+      shared += objects > 1 ? 1 : 0;
+      EXPECT_EQ(ownerF[cc], owner[cc]) << "cell " << c;
+    }
+    EXPECT_GT(shared, 20);  // the overlaps the tie rules decide are there
+  }
+}
+
 }  // namespace
 }  // namespace hvi::tvd

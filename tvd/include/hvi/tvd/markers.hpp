@@ -116,6 +116,12 @@ class MarkerSet {
   //! coverage is written.
   void rasterize(const GridSpec& grid, std::vector<int>& owner, std::vector<Vec2>& normal,
                  std::vector<double>& fraction, int rowLo, int rowHi) const;
+  //! The cut-cell mode's form: the owners and fraction[object][c], one array per object (any
+  //! arrays of the right count and size are written in place, given they are zero outside grid
+  //! rows [rowLo, rowHi); otherwise they are sized and zeroed), and no normals (the mode reads
+  //! none). The owners and fractions are those of the forms above, bit for bit.
+  void rasterizeFractions(const GridSpec& grid, std::vector<int>& owner,
+                          std::vector<std::vector<double>>& fraction, int rowLo, int rowHi) const;
 
   //! Apertures of every cell face by every object (see FaceApertures), exact for the straight
   //! marker segments up to rounding. Parts of the lines outside the grid count (the winding
@@ -151,8 +157,11 @@ class MarkerSet {
   //! Throws SimulationError if the redistribution (spacing h within [minLen, maxLen]) would
   //! give the lines more than a few points per grid cell.
   void checkGrowth(const GridSpec& grid, double h, double minLen, double maxLen) const;
-  void rasterizeInto(const GridSpec& grid, std::vector<int>& owner, std::vector<Vec2>& normal,
-                     double* fraction) const;
+  //! `normal` null: no normals (and no marker lengths); `fraction` null: no fractions, else
+  //! one array per object.
+  void rasterizeInto(const GridSpec& grid, std::vector<int>& owner, std::vector<Vec2>* normal,
+                     double* const* fraction) const;
+  void clearRows(const GridSpec& grid, int rowLo, int rowHi) const;  // of objectFraction_
 
   std::vector<MarkerLine> lines_;
   int objects_ = 0;
@@ -163,10 +172,10 @@ class MarkerSet {
   double tinyLoopCells_ = 0.05;
 
   // Scratch reused between calls so that the per-step calls do not allocate.
-  mutable std::vector<double> acc_;        // per-object coverage accumulation over its bounding box
-  mutable std::vector<double> best_;       // largest object fraction so far, per cell
-  mutable std::vector<double> total_;      // sum of object fractions, per cell
-  mutable std::vector<double> cutLength_;  // length of marker segments inside each cell
+  mutable std::vector<double> acc_;    // per-object coverage accumulation over its bounding box
+  mutable std::vector<double> best_;   // largest object fraction so far, per cell
+  mutable std::vector<double> total_;  // sum of object fractions, then marker length, per cell
+  mutable std::vector<double*> objectFraction_;  // each object's fraction array
   std::vector<Vec2> scratchPoints_;
   //! A crossing of a grid line by a segment (faceApertures): position along the line (cells),
   //! winding change, and which one-sided limits see it (bit 0: side 0, bit 1: side 1).

@@ -55,13 +55,21 @@ class Ownership {
   //! Cut cells: markers on a wall stay on it, none crosses one (Options::markerWalls).
   void setMarkerWalls(bool on) { markerWalls_ = on; }
   //! The marker step of the cut-cell mode: moves and redistributes the lines, rebuilds the
-  //! owner and normal arrays and the fractions; the flow state is not touched. The material
+  //! owner array and the fractions (into the buffers lent, lendFractions); the flow state is
+  //! not touched. The material
   //! and the lines lie within grid rows [rowLo, rowHi), at least two rows from their ends (or
   //! at the grid's edge), and so does every velocity this mode ever set (Phases::rowLo): only
   //! those rows are visited.
   void move(const Conserved& U, double dt, int rowLo, int rowHi);
-  //! Per object and cell (object * cells + c): the part of the cell the object covers.
-  [[nodiscard]] const std::vector<double>& fractions() const { return fraction_; }
+  //! Per object o and cell c (fractions()[o][c]): the part of the cell the object covers, as
+  //! the last rasterisation (setUp, move, remeasure) left it, until taken.
+  [[nodiscard]] const std::vector<std::vector<double>>& fractions() const { return fraction_; }
+  //! Hands the fractions over (the phases' volume fractions are computed from them in place),
+  //! leaving none here: the next rasterisation writes into the buffers lent before it.
+  [[nodiscard]] std::vector<std::vector<double>> takeFractions();
+  //! Buffers for the next rasterisation's fractions (per object, zero outside the rows move
+  //! is given), so that the fractions need no array of their own between steps.
+  void lendFractions(std::vector<std::vector<double>> buffers) { fraction_ = std::move(buffers); }
   //! Rasterises the current lines again (after a restart) into owner, normals and fractions.
   void remeasure();
 
@@ -69,7 +77,11 @@ class Ownership {
   void addBoundaryMass(int m, double mass) { target_[static_cast<std::size_t>(m)] += mass; }
 
   [[nodiscard]] const std::vector<int>& owner() const { return owner_; }
+  //! The marker normals per cell; empty in the cut-cell mode, which reads none.
   [[nodiscard]] const std::vector<Vec2>& normal() const { return normal_; }
+  //! Cut-cell mode, for its checkpoint: the normals of the current lines (MarkerSet::rasterize),
+  //! computed on demand (16 B per cell less between checkpoints).
+  [[nodiscard]] std::vector<Vec2> cutCellNormals() const;
   [[nodiscard]] const std::vector<int>& objectMaterial() const { return objectMaterial_; }
   [[nodiscard]] const MarkerSet& markers() const { return markers_; }
   [[nodiscard]] const std::vector<double>& targets() const { return target_; }
@@ -128,8 +140,8 @@ class Ownership {
   bool cutCells_ = false;
   std::array<bool, 4> open_{};  // cut-cell mode: the outflow sides (MarkerSet::advect)
   bool markerWalls_ = true;
-  std::array<bool, 4> walls_{};   //!< xmin, xmax, zmin, zmax hold the markers (cut cells)
-  std::vector<double> fraction_;  // cut-cell mode: object fractions per cell
+  std::array<bool, 4> walls_{};  //!< xmin, xmax, zmin, zmax hold the markers (cut cells)
+  std::vector<std::vector<double>> fraction_;  // cut-cell mode: object fractions per cell
 };
 
 }  // namespace hvi::tvd

@@ -17,6 +17,20 @@ struct CellVolumes;
 //! worth a flux. Material stranded in such a cell is handed to a neighbour (Phases::repair).
 inline constexpr double kPhaseAbsent = 1e-9;
 
+struct Phases;
+
+//! Each phase's volume fractions before a marker step, where nonzero (cells in increasing
+//! order): the repair reads them only where a phase is left with no neighbour, so a sparse copy
+//! replaces a second array of every phase's fractions (8 B per phase and cell).
+struct OldFractions {
+  std::vector<std::vector<long>> cell;
+  std::vector<std::vector<double>> value;
+  //! Keeps the nonzero fractions of phases.alpha (all lie in rows [rowLo, rowHi)).
+  void keep(const Phases& phases);
+  //! Phase p's kept fraction of cell c (0 where none was kept).
+  [[nodiscard]] double at(int p, long c) const;
+};
+
 //! Per phase p (body index; the solver keeps each body's material) and cell c: the volume
 //! fraction alpha (from the marker lines), the conserved state per unit CELL volume q = alpha U
 //! (U the phase's own state per unit phase volume), and the one-sided face apertures of the
@@ -60,17 +74,18 @@ struct Phases {
 
   //! Sizes every array for `phases` bodies on `grid`, all empty.
   void resize(int phases, const GridSpec& grid);
-  //! Volume fractions (`fraction`: every body's cell fractions, MarkerSet::rasterize) and face
-  //! apertures from the marker lines; phase p is body p. Where two bodies' lines overlap by
+  //! Volume fractions and face apertures from the marker lines; phase p is body p. `alpha`
+  //! holds every body's cell fractions (MarkerSet::rasterizeFractions, zero outside the lines'
+  //! rows) on entry and the volume fractions on return: where two bodies' lines overlap by
   //! round-off so that the phases together cover more than a cell or a face, each is scaled to
-  //! fit.
-  void measure(const MarkerSet& markers, const std::vector<double>& fraction);
+  //! fit, and a fraction below kPhaseAbsent is 0.
+  void measure(const MarkerSet& markers);
   //! After the volume fractions change: material left in a cell its phase no longer occupies
   //! goes to the neighbour of that phase with the largest fraction, and a cell the phase newly
   //! occupies shares the state of that neighbour (conservative averages of the integrals,
   //! Hu et al. 2006, section 2.5). `oldAlpha` is the fraction before the change; a phase with
   //! no neighbour within two rings keeps its old fraction there (an orphan, counted).
-  long repair(const CellVolumes& volumes, const std::vector<std::vector<double>>& oldAlpha);
+  long repair(const CellVolumes& volumes, const OldFractions& oldAlpha);
   //! First part of repair for phase p: material the sweeps carried ahead of the marker lines
   //! goes to the neighbouring cells the lines give it (working fraction `volume` against alpha).
   void settle(const CellVolumes& volumes, int p);

@@ -206,13 +206,13 @@ class TvdSolver final : public Solver {
   long step_ = 0;
   double dt0_ = 0.0;  // first step's dt: the reference of the dt-collapse check
   Ledger ledger_;
-  Ownership ownership_;  // markers only
-  bool cut_ = false;     // conservative cut-cell interfaces (markers only)
-  Phases phases_;        // cut-cell mode: per material fractions, apertures and states
-  std::vector<std::vector<double>> alphaOld_;  // cut-cell mode: fractions before the marker step
-  long relaxations_ = 0;                        // cut-cell mode: relaxed cell-stages (diagnostic)
-  long mixings_ = 0;                            // cut-cell mode: deficits mixed (diagnostic)
-  long orphans_ = 0;                            // cut-cell mode: cells kept off the geometry
+  Ownership ownership_;    // markers only
+  bool cut_ = false;       // conservative cut-cell interfaces (markers only)
+  Phases phases_;          // cut-cell mode: per material fractions, apertures and states
+  OldFractions alphaOld_;  // cut-cell mode: fractions before the marker step (nonzero ones)
+  long relaxations_ = 0;   // cut-cell mode: relaxed cell-stages (diagnostic)
+  long mixings_ = 0;       // cut-cell mode: deficits mixed (diagnostic)
+  long orphans_ = 0;       // cut-cell mode: cells kept off the geometry
   std::vector<double> phaseOutflow_;  // cut-cell mode: each phase's mass out through outflow sides
   std::vector<double> phaseEdge_;     // cut-cell mode: the same per line and sweep (line order)
   // Cut-cell mode: the working fractions equal alpha (the first sweep of a step reads alpha and
