@@ -21,7 +21,7 @@ constexpr std::array<KeyRow<Scene>, 2> kTime{{
      .docValue = "**required**, time > start", .required = true},
 }};
 
-constexpr std::array<KeyRow<SphParams>, 19> kSph{{
+constexpr std::array<KeyRow<SphParams>, 20> kSph{{
     {.key = "spacing", .kind = K::Quantity, HVI_KEY_FIELD(SphParams, spacing),
      .ok = [](double v) { return v > 0.0; }, .problem = "must be > 0", .allowed = "a length > 0",
      .docValue = "length > 0, particle spacing dx", .docDefault = "`0.01 cm`"},
@@ -51,6 +51,14 @@ constexpr std::array<KeyRow<SphParams>, 19> kSph{{
      .allowed = "a number in [0, 1]",
      .docValue = "in [0, 1]: share of the viscous pair term in the symmetric r-z form's hoop "
                  "term (docs/sph-rz.md, \"The viscous hoop\"); r-z symmetric form only",
+     .docDefault = "0"},
+    // docs/sph-rz.md, "Corrected axial gradient": a measured trial, off by default.
+    {.key = "rz_axis_correction", .kind = K::Number, HVI_KEY_FIELD(SphParams, rzAxisCorrection),
+     .ok = [](double v) { return v >= 0.0 && v <= 10.0; }, .problem = "must be in [0, 10]",
+     .allowed = "a number in [0, 10] (units of h)",
+     .docValue = "in [0, 10] h: the axial pair gradient corrected by the Bonet-Lok matrix within "
+                 "this distance of the axis (docs/sph-rz.md, \"Corrected axial gradient\"); r-z "
+                 "symmetric form only; 0 off",
      .docDefault = "0"},
     {.key = "alpha", .kind = K::Number, HVI_KEY_FIELD(SphParams, alpha),
      .ok = [](double v) { return v >= 0.0; }, .problem = "must be >= 0", .allowed = "alpha >= 0",

@@ -16,8 +16,14 @@ namespace hvi::sph::detail {
 namespace {
 
 inline PairState load(const PairArrays& a, std::size_t i) {
-  return {a.x[i], a.z[i],  a.vx[i], a.vz[i], a.rho[i], a.c[i],
-          a.h[i], a.mu[i], a.rw[i], a.q[i],  a.lam[i]};
+  PairState s{a.x[i], a.z[i],  a.vx[i], a.vz[i], a.rho[i], a.c[i],
+              a.h[i], a.mu[i], a.rw[i], a.q[i],  a.lam[i]};
+  if (!a.lzz.empty()) {
+    s.lzx = a.lzx[i];
+    s.lzz = a.lzz[i];
+    s.corr = true;
+  }
+  return s;
 }
 
 // The compatible remainder of row i from its pair data wx, wz (compatibleEnergy), one
@@ -531,6 +537,31 @@ ScanKernel scanKernel() {
   return k;
 }
 
+ForcePass selectScalarForcePass(cases::Kernel kernel, bool rz, bool viscous, bool compatible,
+                                bool cached) {
+  const auto sel = [&](auto k) -> ForcePass {
+    using K = decltype(k);
+    if (rz)
+      return viscous ? (compatible ? (cached ? &forcePass<K, true, true, true, true>
+                                             : &forcePass<K, true, true, false, true>)
+                                   : (cached ? &forcePass<K, true, true, true, false>
+                                             : &forcePass<K, true, true, false, false>))
+                     : (compatible ? (cached ? &forcePass<K, true, false, true, true>
+                                             : &forcePass<K, true, false, false, true>)
+                                   : (cached ? &forcePass<K, true, false, true, false>
+                                             : &forcePass<K, true, false, false, false>));
+    return viscous ? (compatible ? (cached ? &forcePass<K, false, true, true, true>
+                                           : &forcePass<K, false, true, false, true>)
+                                 : (cached ? &forcePass<K, false, true, true, false>
+                                           : &forcePass<K, false, true, false, false>))
+                   : (compatible ? (cached ? &forcePass<K, false, false, true, true>
+                                           : &forcePass<K, false, false, false, true>)
+                                 : (cached ? &forcePass<K, false, false, true, false>
+                                           : &forcePass<K, false, false, false, false>));
+  };
+  return kernel == cases::Kernel::Gaussian ? sel(GaussianKernel{}) : sel(CubicSplineKernel{});
+}
+
 ForcePass selectForcePass(cases::Kernel kernel, bool rz, bool viscous, bool compatible,
                           bool cached, bool half) {
   if (half) {
@@ -647,6 +678,15 @@ RemainderPass pickRemainder(bool rz, bool viscous) {
 
 }  // namespace
 
+RemainderPass selectScalarRemainderPass(cases::Kernel kernel, bool rz, bool viscous) {
+  const auto sel = [&](auto k) -> RemainderPass {
+    using K = decltype(k);
+    if (rz) return viscous ? &scalarRemainder<K, true, true> : &scalarRemainder<K, true, false>;
+    return viscous ? &scalarRemainder<K, false, true> : &scalarRemainder<K, false, false>;
+  };
+  return kernel == cases::Kernel::Gaussian ? sel(GaussianKernel{}) : sel(CubicSplineKernel{});
+}
+
 RemainderPass selectRemainderPass(cases::Kernel kernel, bool rz, bool viscous, bool half) {
   if (half) {
     if (!halfListsAvailable(kernel, rz)) return nullptr;
@@ -703,6 +743,58 @@ void weightChange(const NeighbourList& list, std::size_t nReal, const double* x0
 ListPass selectListPass(cases::Kernel kernel) {
   return kernel == cases::Kernel::Gaussian ? &listPass<GaussianKernel>
                                            : &listPass<CubicSplineKernel>;
+}
+
+namespace {
+template <class K>
+void axisMatrixK(PairArrays& a, std::size_t nReal, const NeighbourList& list, double zone) {
+  const long nr = static_cast<long>(nReal);
+#pragma omp parallel for schedule(static) if (nr > kParallelPairs)
+  for (long il = 0; il < nr; ++il) {
+    const std::size_t i = static_cast<std::size_t>(il);
+    const double xi = a.x[i], zi = a.z[i], hi = a.h[i];
+    // 1 inside the zone, 0 from one h beyond it: no jump in the scheme at the zone's edge.
+    const double blend = std::clamp(zone + 1.0 - std::abs(xi) / hi, 0.0, 1.0);
+    a.lzx[i] = 0.0;
+    a.lzz[i] = 1.0;
+    if (blend == 0.0) continue;
+    const int* nb = list.index.data() + list.start[i];
+    double mxx = 0.0, mxz = 0.0, mzx = 0.0, mzz = 0.0;
+    for (int k = 0; k < list.count[i]; ++k) {
+      const std::size_t j = static_cast<std::size_t>(nb[k]);
+      const double dx = xi - a.x[j], dz = zi - a.z[j];
+      const double hij = 0.5 * (hi + a.h[j]);
+      const double ih2 = 1.0 / (hij * hij);
+      const double r2 = dx * dx + dz * dz;
+      const double w = K::value(r2, hij, ih2);
+      if (w == 0.0) continue;
+      const double f = K::gradFactor(w, r2, hij, ih2) * a.mu[j] / a.rho[j];
+      // (x_j - x_i) (x) grad_i W_ij = -(dx, dz) (x) f (dx, dz)
+      mxx -= dx * f * dx;
+      mxz -= dx * f * dz;
+      mzx -= dz * f * dx;
+      mzz -= dz * f * dz;
+    }
+    const double inv = 1.0 / a.rs[i];
+    mxx *= inv;
+    mxz *= inv;
+    mzx *= inv;
+    mzz *= inv;
+    const double det = mxx * mzz - mxz * mzx;
+    // A particle with too few neighbours (spray) keeps the plain gradient.
+    if (!(det > 0.05)) continue;
+    a.lzx[i] = blend * (-mzx / det);
+    a.lzz[i] = 1.0 + blend * (mxx / det - 1.0);
+  }
+}
+}  // namespace
+
+void axisMatrix(PairArrays& a, std::size_t nReal, const NeighbourList& list, cases::Kernel kernel,
+                double zone) {
+  if (kernel == cases::Kernel::Gaussian)
+    axisMatrixK<GaussianKernel>(a, nReal, list, zone);
+  else
+    axisMatrixK<CubicSplineKernel>(a, nReal, list, zone);
 }
 
 double kernelSupport(cases::Kernel kernel) {

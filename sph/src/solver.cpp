@@ -57,6 +57,12 @@ void validate(const cases::Scene& scene) {
                      ": sph.rz_viscous_hoop is implemented for the symmetric r-z form only "
                      "(docs/sph-rz.md); set sph.rz_viscous_hoop = 0 or sph.rz_form = "
                      "\"symmetric\" (\"auto\" is the ring form with strength)");
+  if (scene.geometry == Geometry::Axisymmetric && scene.sph.rzAxisCorrection != 0.0 &&
+      resolvedRzForm(scene) != cases::RzForm::Symmetric)
+    throw InputError(scene.path +
+                     ": sph.rz_axis_correction is implemented for the symmetric r-z form only "
+                     "(docs/sph-rz.md); set sph.rz_axis_correction = 0 or sph.rz_form = "
+                     "\"symmetric\"");
   if (!(scene.sph.alpha >= 0.0) || !(scene.sph.beta >= 0.0))
     throw InputError(fmt::format("{}: sph.alpha = {} and sph.beta = {} must be >= 0", scene.path,
                                  scene.sph.alpha, scene.sph.beta));
@@ -86,6 +92,7 @@ StepperConfig stepperConfig(const cases::Scene& scene) {
   cfg.energy = scene.sph.energy;
   cfg.rzForm = resolvedRzForm(scene);
   cfg.rzViscousHoop = scene.sph.rzViscousHoop;
+  cfg.rzAxisCorrection = scene.sph.rzAxisCorrection;
   cfg.cfl = scene.sph.cfl;
   cfg.domain = scene.domain;
   cfg.time = scene.tStart;

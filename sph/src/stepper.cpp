@@ -38,6 +38,10 @@ Stepper::Impl::Impl(ParticleSystem ps, std::vector<eos::Eos> mats, StepperConfig
   } else if (rz) {
     axis = std::make_unique<detail::AxisCorrection>(cfg.kernel);
   }
+  if (cfg.rzAxisCorrection != 0.0 && !(ring && cfg.rzAxisCorrection > 0.0))
+    throw InputError(
+        fmt::format("SPH: sph.rz_axis_correction = {} needs the symmetric r-z form and a value > 0",
+                    cfg.rzAxisCorrection));
   compatible = cfg.energy == cases::EnergyForm::Compatible;
   // With the viscosity switch the strength pass sums the (switched) viscosity: the force passes
   // run inviscid (docs/strength.md, "Viscosity switch").
@@ -84,6 +88,12 @@ Stepper::Impl::Impl(ParticleSystem ps, std::vector<eos::Eos> mats, StepperConfig
   passFresh = detail::selectForcePass(cfg.kernel, rz, viscous, compatible, false, half);
   passList = detail::selectListPass(cfg.kernel);
   passRemainder = detail::selectRemainderPass(cfg.kernel, rz, viscous, half);
+  if (cfg.rzAxisCorrection > 0.0) {
+    // The lane kernels do not read the correction: the one-pair-at-a-time passes.
+    passCached = detail::selectScalarForcePass(cfg.kernel, rz, viscous, compatible, true);
+    passFresh = detail::selectScalarForcePass(cfg.kernel, rz, viscous, compatible, false);
+    passRemainder = detail::selectScalarRemainderPass(cfg.kernel, rz, viscous);
+  }
   t = cfg.time;
   resizeWork();
   corrector();
@@ -165,6 +175,14 @@ void Stepper::Impl::corrector() {
   deriveRates();
   bounds.refreshGhosts(a, n);
   if (strength) strength->refreshPoints(a, n, e.data(), mat.data(), bounds);
+}
+
+void Stepper::Impl::axisMatrix() {
+  if (!(cfg.rzAxisCorrection > 0.0)) return;
+  const std::size_t total = a.size();
+  for (auto* v : {&a.lzx, &a.lzz, &a.lxx}) v->resize(total);
+  detail::axisMatrix(a, n, list, cfg.kernel, cfg.rzAxisCorrection);
+  bounds.mirrorGhostTensors(a.lxx.data(), a.lzz.data(), a.lzx.data(), n);
 }
 
 void Stepper::Impl::compatibleRemainder(double half) {
@@ -286,6 +304,7 @@ double Stepper::step(double tStop) {
   const long nl = static_cast<long>(s.n);
   const detail::Rates ratesN{s.ax0.data(), s.az0.data(), s.de0.data(), s.drho0.data(),
                              s.phi0.data()};
+  s.axisMatrix();
   s.passCached(a, s.n, s.list, s.cfg.visc, s.axis.get(), s.ring, ratesN);
   if (s.strength) s.strength->pass(a, s.n, s.list, true, s.axis.get(), ratesN);
   double dt = s.timeStep();
@@ -365,6 +384,7 @@ double Stepper::step(double tStop) {
     }
     ratesHalf.hoopAx = s.rz ? s.hoopAx.data() : nullptr;
   }
+  s.axisMatrix();
   s.passFresh(a, s.n, s.list, s.cfg.visc, s.axis.get(), s.ring, ratesHalf);
   // Before the compatible remainder: the stress accelerations are part of a^{n+1/2} - a^n.
   if (s.strength) s.strength->pass(a, s.n, s.list, false, s.axis.get(), ratesHalf);

@@ -21,6 +21,9 @@ struct PairArrays {
   // Fixed per particle: copied when the ghosts are made.
   std::vector<double> h;
   std::vector<int> obj;
+  //! r-z axis correction only (else empty; sized and mirrored by the stepper): the z row of
+  //! each point's corrected-gradient matrix, and a scratch column for the mirror.
+  std::vector<double> lzx, lzz, lxx;
   //! Only x, z, h, obj, mu and rw are sized and kept (the mass iteration, which reads nothing
   //! else: 56 B per point less at the peak of a run's set-up).
   bool lean = false;

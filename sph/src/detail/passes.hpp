@@ -44,6 +44,10 @@ using ForcePass = void (*)(const PairArrays& a, std::size_t nReal, const Neighbo
 //! and do not depend on the thread count.
 ForcePass selectForcePass(cases::Kernel kernel, bool rz, bool viscous, bool compatible,
                           bool cached, bool half = false);
+//! The one-pair-at-a-time pass (pairTerms, no lanes): the pass that reads PairArrays' axis
+//! correction columns lzx, lzz (sph.rz_axis_correction, docs/sph-rz.md).
+ForcePass selectScalarForcePass(cases::Kernel kernel, bool rz, bool viscous, bool compatible,
+                                bool cached);
 //! Whether half rows have their passes: Gaussian kernel, planar, lanes of AVX2 or AVX-512.
 bool halfListsAvailable(cases::Kernel kernel, bool rz);
 
@@ -66,6 +70,16 @@ using RemainderPass = void (*)(const PairArrays& a, std::size_t nReal, const Nei
                                double* de);
 RemainderPass selectRemainderPass(cases::Kernel kernel, bool rz, bool viscous,
                                   bool half = false);
+//! The remainder through pairTerms (as selectScalarForcePass).
+RemainderPass selectScalarRemainderPass(cases::Kernel kernel, bool rz, bool viscous);
+
+//! sph.rz_axis_correction (docs/sph-rz.md, "Corrected axial gradient"): for every real particle
+//! within (zone + 1) h of the axis, M_i = (1/s_i) sum_j (nu_j / rho_j) (x_j - x_i) (x) grad_i W_ij
+//! over its list (every object, ghosts included) at the current positions, and the z row of
+//! L_i = M_i^{-1} blended with the identity from 1 at r = zone h to 0 at (zone + 1) h, into
+//! a.lzx, a.lzz (sized a.size(); the others' identity). The ghosts' rows are the caller's.
+void axisMatrix(PairArrays& a, std::size_t nReal, const NeighbourList& list, cases::Kernel kernel,
+                double zone);
 
 //! r-z predictor (docs/sph-rz.md, "Density"): adds to rho_i the change of the summation
 //! density through the ring weights alone, sum_j dmu_j W_ij over i's own object (j = i

@@ -20,6 +20,9 @@ struct Stepper::Impl {
   void deriveWeights();      // rw, mu of the reals from their positions and masses
   void deriveRates();        // q, lam of the reals from P, rho, v
   void checkState(const char* stage) const;
+  //! sph.rz_axis_correction: the corrected-gradient rows a.lzx, a.lzz of the current state
+  //! (reals and ghosts; nothing when off).
+  void axisMatrix();
   //! Compatible energy: completes de1 (the half-state rate) with the step's remainder.
   void compatibleRemainder(double half);
   std::string objectName(std::size_t i) const;  // of real particle i, for diagnostics

@@ -54,11 +54,12 @@ struct Fastest {
 
 //! Runs a shipped impact scene (striker = first body, an aluminium-on-aluminium impact) to its
 //! end and returns the fastest particle speed seen after any step, with the bound.
-Fastest fastestParticle(const std::string& name,
-                        std::optional<cases::RzForm> form = std::nullopt) {
+Fastest fastestParticle(const std::string& name, std::optional<cases::RzForm> form = std::nullopt,
+                        double axisCorrection = 0.0) {
   cases::Scene scene =
       cases::loadScene(std::string(HVI_SOURCE_DIR) + "/cases/scenes/" + name + ".toml");
   if (form) scene.sph.rzForm = *form;
+  scene.sph.rzAxisCorrection = axisCorrection;
   const cases::Body& striker = scene.bodies.at(0);
   const double V = std::abs(striker.velocity.z);
   const eos::Eos& eos = scene.materials.at(striker.material).eos;
@@ -124,12 +125,23 @@ TEST(ImpactSpeedBound, PlanarVariant2StaysWithinTheBound) {
 // above the bound (and 0.7114 against the ring form's 0.7052 at 0.0125 cm). With the viscous
 // hoop (sph.rz_viscous_hoop, docs/sph-rz.md "The speed bound: which particles, which force")
 // 0.7037 / 0.6993 / 0.6905 at kappa = 0.25 / 0.5 / 1, still above. Disabled until the remaining
-// excess is found; run it with --gtest_also_run_disabled_tests.
+// excess is found; run it with --gtest_also_run_disabled_tests. (With the corrected axial
+// gradient the symmetric form meets the bound: the test below.)
 TEST(ImpactSpeedBound, DISABLED_Variant1RzStaysWithinTheBound) {
   const Fastest f = fastestParticle("variant1_sph_coarse", cases::RzForm::Ring);
   EXPECT_LE(f.forward, f.bound);
   const Fastest g = fastestParticle("variant1_sph_coarse", cases::RzForm::Symmetric);
   EXPECT_LE(g.forward, g.bound);
+}
+
+// The symmetric form with the corrected axial gradient within 3 h of the axis
+// (sph.rz_axis_correction, docs/sph-rz.md "Corrected axial gradient"): measured 0.6700 cm/us
+// along the impact, the striker before it slows (= V); no particle of the target above V.
+// Why it helps is not established (the correction leaves the measured cause, the weights' first
+// moment, as it is: RzAxis.CorrectedAxialGradientAtTheAxis); the bound is the test.
+TEST(ImpactSpeedBound, Variant1RzWithAxisCorrectionStaysWithinTheBound) {
+  const Fastest f = fastestParticle("variant1_sph_coarse", cases::RzForm::Symmetric, 3.0);
+  EXPECT_LE(f.forward, f.bound);
 }
 
 }  // namespace

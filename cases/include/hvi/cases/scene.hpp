@@ -132,6 +132,10 @@ struct SphParams {
   //! earlier scheme (Monaghan's Pi with no hoop stress), 1 makes a uniform Pi exert no radial
   //! force at the axis as a uniform pressure does.
   double rzViscousHoop = 0.0;
+  //! r-z symmetric form: the axial pair gradient corrected by the z row of the Bonet-Lok
+  //! matrix L_i = M_i^{-1} within this many h of the axis (blended out over one more h); 0 off
+  //! (docs/sph-rz.md, "Corrected axial gradient").
+  double rzAxisCorrection = 0.0;
   double alpha = 1.0;      //!< Monaghan alpha_Pi
   double beta = 2.0;       //!< Monaghan beta_Pi
   double cfl = 0.3;

@@ -13,6 +13,10 @@ struct PairState {
   double x, z, vx, vz;  //!< cm, cm/us
   double rho, c, h;     //!< g/cm^3, cm/us, cm
   double mu, rw, q, lam;
+  //! r-z axis correction (sph.rz_axis_correction, docs/sph-rz.md), else 0, 1, false: the
+  //! z row (L_zx, L_zz) of the particle's corrected-gradient matrix L = M^{-1}.
+  double lzx = 0.0, lzz = 1.0;
+  bool corr = false;
 };
 
 //! Summands of particle a's sums for neighbour b. The driver adds them up over b and, in r-z,
@@ -49,9 +53,13 @@ inline PairResult pairTerms(const PairState& a, const PairState& b, double w, do
   const double r2 = dx * dx + dz * dz;
   const double h = 0.5 * (a.h + b.h);
   const double f = K::gradFactor(w, r2, h, ih2);
-  const double gx = f * dx, gz = f * dz;
+  const double gx = f * dx, gz0 = f * dz;
   const double dvx = a.vx - b.vx, dvz = a.vz - b.vz;
-  const double vdg = dvx * gx + dvz * gz;
+  const double vdg0 = dvx * gx + dvz * gz0;  // the continuity rate's: uncorrected
+  // Axis correction: the axial component of (L_a + L_b) grad W / 2, antisymmetric in a, b
+  // (Bonet and Lok 1999), so momentum and the compatible energy stay exact.
+  const double gz = a.corr || b.corr ? 0.5 * ((a.lzx + b.lzx) * gx + (a.lzz + b.lzz) * gz0) : gz0;
+  const double vdg = a.corr || b.corr ? dvx * gx + dvz * gz : vdg0;
   double coef = a.q + b.q;
   double halfPi = 0.0;  // rbar Pi / 2: each side's part of the viscous work
   PairResult res;
@@ -75,7 +83,7 @@ inline PairResult pairTerms(const PairState& a, const PairState& b, double w, do
     (void)halfPi;
     res.de = 0.5 * mc * vdg;
   }
-  res.drho = b.mu * vdg;
+  res.drho = b.mu * vdg0;
   if constexpr (RZ) res.hoop = b.mu * b.q * w;
   return res;
 }

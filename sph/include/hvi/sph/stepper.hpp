@@ -24,6 +24,8 @@ struct StepperConfig {
   //! docs/sph-rz.md; Symmetric selects that form, anything else the ring form
   cases::RzForm rzForm = cases::RzForm::Ring;
   double rzViscousHoop = 0.0;  //!< symmetric r-z form: kappa of the viscous hoop (sph-rz.md)
+  //! symmetric r-z form: corrected axial gradient within this many h of the axis, 0 off
+  double rzAxisCorrection = 0.0;
   double cfl = 0.3;
   cases::Domain domain;  //!< walls / axis are mirrors, outflow sides remove particles
   double time = 0.0;     //!< us, time of the initial state
