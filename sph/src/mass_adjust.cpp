@@ -26,31 +26,36 @@ MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) 
   const detail::RingScale* ring = sym ? &detail::ringScale(opt.kernel) : nullptr;
   MassAdjustReport report;
   if (n == 0) return report;
+  // Memory (docs/performance.md, "SPH memory"): the pair arrays take x, z, h and the object
+  // over from ps (given back at the end) instead of copying them, the masses are not held
+  // while the iteration runs (its weights are), and the cell grid goes once the list is built.
   detail::PairArrays a;
   a.lean = true;
+  a.x = std::move(ps.x);
+  a.z = std::move(ps.z);
+  a.h = std::move(ps.h);
+  a.obj = std::move(ps.object);
+  std::vector<double>().swap(ps.m);
   a.resize(n);
   double hmax = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    a.x[i] = ps.x[i];
-    a.z[i] = ps.z[i];
-    a.h[i] = ps.h[i];
-    a.obj[i] = ps.object[i];
     a.mu[i] = 1.0;
-    a.rw[i] = rz ? std::abs(ps.x[i]) : 1.0;
-    if (sym) a.rw[i] = ring->value(std::abs(ps.x[i]), ps.h[i]);  // s_i here
-    hmax = std::max(hmax, ps.h[i]);
+    a.rw[i] = rz ? std::abs(a.x[i]) : 1.0;
+    if (sym) a.rw[i] = ring->value(std::abs(a.x[i]), a.h[i]);  // s_i here
+    hmax = std::max(hmax, a.h[i]);
   }
   // Positions do not move, so the list (radius = kernel support) is built once.
   const double support = detail::kernelSupport(opt.kernel);
   detail::Boundaries bounds(opt.domain, opt.geometry);
   bounds.makeGhosts(a, n, support * hmax);
-  CellGrid grid;
   NeighbourList list;
   list.fixedPoints = true;
-  detail::selectListPass(opt.kernel)(a, n, support, grid, list, nullptr);
+  {
+    CellGrid grid;
+    detail::selectListPass(opt.kernel)(a, n, support, grid, list, nullptr);
+  }
 
-  std::vector<double> rho(n), self(n);
-  for (std::size_t i = 0; i < n; ++i) self[i] = detail::kernelSelf(opt.kernel, a.h[i]);
+  std::vector<double> rho(n);
   std::vector<unsigned char> alive(n, 1);
   std::map<int, double> maxMu;
   const long nl = static_cast<long>(n);
@@ -71,7 +76,7 @@ MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) 
         const std::size_t i = static_cast<std::size_t>(il);
         if (!alive[i]) continue;
         const int obj = a.obj[i];
-        double sum = a.mu[i] * self[i];
+        double sum = a.mu[i] * detail::kernelSelf(opt.kernel, a.h[i]);
         const int* nb = list.index.data() + list.start[i];
         const double* w = list.w.data() + list.start[i];
         for (int k = 0; k < list.count[i]; ++k) {
@@ -99,8 +104,8 @@ MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) 
           "particle {} (x = {}, z = {} cm, object {}); raise sph.max_mass_iterations or check "
           "the lattice",
           report.iterations, residual, ps.id[static_cast<std::size_t>(worst)],
-          ps.x[static_cast<std::size_t>(worst)], ps.z[static_cast<std::size_t>(worst)],
-          ps.object[static_cast<std::size_t>(worst)]));
+          a.x[static_cast<std::size_t>(worst)], a.z[static_cast<std::size_t>(worst)],
+          a.obj[static_cast<std::size_t>(worst)]));
     for (std::size_t i = 0; i < n; ++i)
       if (alive[i]) a.mu[i] *= ps.rhoRef[i] / rho[i];
     // Deletion compares with the largest *new* weight of the object. The spec (section 3,
@@ -123,8 +128,20 @@ MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) 
     bounds.refreshGhosts(a, n);
     ++report.iterations;
   }
+  list = NeighbourList();
+  std::vector<double>().swap(rho);
+  ps.m.resize(n);
   for (std::size_t i = 0; i < n; ++i)
     ps.m[i] = rz ? 2.0 * std::numbers::pi * a.rw[i] * a.mu[i] : a.mu[i];
+  // The reals' x, z, h and object back to ps (the ghosts after them dropped).
+  const auto giveBack = [n](auto& from, auto& to) {
+    from.resize(n);
+    to = std::move(from);
+  };
+  giveBack(a.x, ps.x);
+  giveBack(a.z, ps.z);
+  giveBack(a.h, ps.h);
+  giveBack(a.obj, ps.object);
   if (report.deleted > 0) ps.compact(alive);
   return report;
 }
