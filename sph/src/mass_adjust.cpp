@@ -6,16 +6,67 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <type_traits>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "detail/axis_correction.hpp"
 #include "detail/boundary.hpp"
+#include "detail/force_lanes.hpp"
 #include "detail/passes.hpp"
 #include "hvi/common/error.hpp"
 #include "hvi/common/stop_flag.hpp"
+#include "hvi/sph/kernel.hpp"
 
 namespace hvi::sph {
+
+namespace {
+
+// W_ij of row i into w (the list's stride plus a lane width) as the list build computed them:
+// the Gaussian's in lanes (detail::rowWKernel, the scan's operations), the spline's as the
+// build's second pass (h_ij = (h_i + h_j) / 2). The same bits.
+template <class K>
+void rowWeights(const detail::PairArrays& a, const NeighbourList& list, std::size_t i,
+                double* w) {
+  const double xi = a.x[i], zi = a.z[i], hi = a.h[i];
+  const int* nb = list.index.data() + list.start[i];
+  const int cnt = list.count[i];
+  if constexpr (std::is_same_v<K, GaussianKernel>) {
+    static const detail::RowWKernel rowW = detail::rowWKernel();
+    rowW(a.x.data(), a.z.data(), a.h.data(), i, nb, cnt, w);
+  } else {
+    for (int k = 0; k < cnt; ++k) {
+      const std::size_t j = static_cast<std::size_t>(nb[k]);
+      const double dx = xi - a.x[j], dz = zi - a.z[j];
+      const double hij = 0.5 * (hi + a.h[j]);
+      w[k] = K::value(dx * dx + dz * dz, hij, 1.0 / (hij * hij));
+    }
+  }
+}
+
+// One sweep's sum_j mu_j W_ij over i's own object (mu_i W_ii included), W_ij from `cached`
+// (the row's, if not null) or recomputed into the scratch `w`.
+template <class K>
+double sweepRow(const detail::PairArrays& a, const NeighbourList& list, std::size_t i,
+                const double* cached, double* w) {
+  const int obj = a.obj[i];
+  double sum = a.mu[i] * K::value(0.0, a.h[i]);
+  const int* nb = list.index.data() + list.start[i];
+  const int cnt = list.count[i];
+  const double* wr = cached;
+  if (!wr) {
+    rowWeights<K>(a, list, i, w);
+    wr = w;
+  }
+  for (int k = 0; k < cnt; ++k) {
+    const std::size_t j = static_cast<std::size_t>(nb[k]);
+    if (a.obj[j] == obj) sum += a.mu[j] * wr[k];
+  }
+  return sum;
+}
+
+}  // namespace
 
 MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) {
   const std::size_t n = ps.size();
@@ -50,9 +101,36 @@ MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) 
   bounds.makeGhosts(a, n, support * hmax);
   NeighbourList list;
   list.fixedPoints = true;
+  // W_ij is cached for the first rows only, up to kCachedSlots per particle on average, and
+  // recomputed in each sweep for the others (the same bits): caching them all (8 B per slot,
+  // ~200 B per particle on variant 2) made the set-up the run's peak memory; with this budget
+  // it stays below the stepping's (docs/performance.md, "SPH memory"), and a sweep recomputes
+  // ~40 % of the rows of a 26-neighbour lattice.
+  list.cacheW = false;
   {
     CellGrid grid;
     detail::selectListPass(opt.kernel)(a, n, support, grid, list, nullptr);
+  }
+  const bool gauss = opt.kernel == cases::Kernel::Gaussian;
+  constexpr std::size_t kCachedSlots = 16;
+  std::size_t cachedRows = 0;
+  while (cachedRows < n && list.start[cachedRows + 1] <= kCachedSlots * n) ++cachedRows;
+  std::vector<double> wCache(list.start[cachedRows]);
+  {
+    const long nc = static_cast<long>(cachedRows);
+#pragma omp parallel if (nc > detail::kParallelPairs)
+    {
+      std::vector<double> w(list.stride + 8);
+#pragma omp for schedule(static)
+      for (long il = 0; il < nc; ++il) {
+        const std::size_t i = static_cast<std::size_t>(il);
+        if (gauss)
+          rowWeights<GaussianKernel>(a, list, i, w.data());
+        else
+          rowWeights<CubicSplineKernel>(a, list, i, w.data());
+        std::copy(w.begin(), w.begin() + list.count[i], wCache.begin() + static_cast<long>(list.start[i]));
+      }
+    }
   }
 
   std::vector<double> rho(n);
@@ -71,18 +149,14 @@ MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) 
     {
       double myRes = 0.0;
       long myWorst = -1;
+      std::vector<double> w(list.stride + 8);
 #pragma omp for schedule(static)
       for (long il = 0; il < nl; ++il) {
         const std::size_t i = static_cast<std::size_t>(il);
         if (!alive[i]) continue;
-        const int obj = a.obj[i];
-        double sum = a.mu[i] * detail::kernelSelf(opt.kernel, a.h[i]);
-        const int* nb = list.index.data() + list.start[i];
-        const double* w = list.w.data() + list.start[i];
-        for (int k = 0; k < list.count[i]; ++k) {
-          const std::size_t j = static_cast<std::size_t>(nb[k]);
-          if (a.obj[j] == obj) sum += a.mu[j] * w[k];
-        }
+        const double* cached = i < cachedRows ? wCache.data() + list.start[i] : nullptr;
+        const double sum = gauss ? sweepRow<GaussianKernel>(a, list, i, cached, w.data())
+                                 : sweepRow<CubicSplineKernel>(a, list, i, cached, w.data());
         rho[i] = sym ? sum / a.rw[i] : sum;
         const double r = std::abs(ps.rhoRef[i] / rho[i] - 1.0);
         if (r > myRes) {
@@ -129,6 +203,7 @@ MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) 
     ++report.iterations;
   }
   list = NeighbourList();
+  std::vector<double>().swap(wCache);
   std::vector<double>().swap(rho);
   ps.m.resize(n);
   for (std::size_t i = 0; i < n; ++i)

@@ -197,8 +197,10 @@ void Stepper::Impl::compatibleRemainder(double half) {
                              a.rs.data(), rz ? hoopAx.data() : nullptr, half, de1.data());
   } else {
     list.sums.swap(de0);
+    lendSpill({&ax0});  // dead once da is formed
     passRemainder(a, n, list, cfg.visc, dax.data(), daz.data(), rz ? hoopAx.data() : nullptr,
                   half, de1.data());
+    lendSpill({});
     list.sums.swap(de0);
   }
 }
@@ -300,7 +302,10 @@ double Stepper::step(double tStop) {
   const long nl = static_cast<long>(s.n);
   const detail::Rates ratesN{s.ax0.data(), s.az0.data(), s.de0.data(), s.drho0.data(),
                              s.phi0.data()};
+  // Half rows' spills in arrays dead during each pass (docs/performance.md, "SPH memory").
+  s.lendSpill({&s.x0, &s.z0, &s.vx0, &s.vz0, &s.e0});
   s.passCached(a, s.n, s.list, s.cfg.visc, s.axis.get(), s.ring, ratesN);
+  s.lendSpill({});
   if (s.strength) s.strength->pass(a, s.n, s.list, true, s.axis.get(), ratesN);
   double dt = s.timeStep();
   if (s.dt0 == 0.0 && dt > 0.0 && std::isfinite(dt)) s.dt0 = dt;
@@ -378,7 +383,9 @@ double Stepper::step(double tStop) {
     }
     ratesHalf.hoopAx = s.rz ? s.hoopAx.data() : nullptr;
   }
+  s.lendSpill({&s.de0, &s.drho0, &s.phi0});
   s.passFresh(a, s.n, s.list, s.cfg.visc, s.axis.get(), s.ring, ratesHalf);
+  s.lendSpill({});
   // Before the compatible remainder: the stress accelerations are part of a^{n+1/2} - a^n.
   if (s.strength) s.strength->pass(a, s.n, s.list, false, s.axis.get(), ratesHalf);
   if (s.compatible) s.compatibleRemainder(half);

@@ -2,6 +2,7 @@
 #pragma once
 #include <string>
 #include <cstdint>
+#include <initializer_list>
 #include <memory>
 #include <type_traits>
 #include <vector>
@@ -59,6 +60,12 @@ struct Stepper::Impl {
     keep.resize(n);
     workReleased = false;
   }
+  // Lends the half passes the arrays `v` (each of at least n) for their spills, or none.
+  void lendSpill(std::initializer_list<std::vector<double>*> v) {
+    int k = 0;
+    for (auto* a : v) list.lentSpill[k++] = a->data();
+    list.lentSpillCount = k;
+  }
   // Frees the work space that is dead between steps (the step arrays, the grid, the half
   // passes' spills, the stored pair data), for an output's peak memory (docs/performance.md,
   // "SPH memory"); the next step sizes it again. The state, the derived values and the list
@@ -106,7 +113,8 @@ struct Stepper::Impl {
   // releaseWork() aside). Arrays dead in part of the step lend their storage there
   // (docs/performance.md, "SPH memory"): x0, z0 and vx0 hold the grid's sorted copies during
   // the list build, drho0 and phi0 the compatible remainder's a^{n+1/2} - a^n (then sized to
-  // the reals and ghosts), de0 its per-particle sums.
+  // the reals and ghosts), de0 its per-particle sums; the half passes' spills lie in x0 ... e0
+  // (state n), de0, drho0, phi0 (half state) and ax0 (remainder): lendSpill.
   std::vector<double> x0, z0, vx0, vz0, e0;
   std::vector<double> ax0, az0, de0, drho0, phi0, ax1, az1, de1;
   // Compatible energy: hoop acceleration (reals, r-z), and per list entry w_ij times the pair

@@ -78,6 +78,11 @@ struct NeighbourList {
   mutable std::vector<std::vector<int>> farJ;      //!< per block: other ends beyond the spill
   mutable std::vector<std::vector<double>> farV;   //!< and their terms
   mutable std::vector<double> sums;
+  //! Half rows: arrays of at least the real particles' count, dead during a pass, that the
+  //! stepper lends for the spills (one per accumulated field; used when there are enough for
+  //! the pass), instead of `spill` (docs/performance.md, "SPH memory").
+  mutable double* lentSpill[5] = {};
+  mutable int lentSpillCount = 0;
 };
 
 //! Brute-force-checkable entry point: lists, for the first `nReal` of `n` points, every other
