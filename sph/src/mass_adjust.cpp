@@ -78,15 +78,34 @@ MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) 
   MassAdjustReport report;
   if (n == 0) return report;
   // Memory (docs/performance.md, "SPH memory"): the pair arrays take x, z, h and the object
-  // over from ps (given back at the end) instead of copying them, the masses are not held
-  // while the iteration runs (its weights are), and the cell grid goes once the list is built.
+  // over from ps instead of copying them, and the cell grid goes once the list is built.
   detail::PairArrays a;
   a.lean = true;
   a.x = std::move(ps.x);
   a.z = std::move(ps.z);
   a.h = std::move(ps.h);
   a.obj = std::move(ps.object);
-  std::vector<double>().swap(ps.m);
+  // ps gets them back on every exit, a stop or an error included (nothing half-done escapes to
+  // the caller); the ghosts after the reals are dropped.
+  struct GiveBack {
+    detail::PairArrays& a;
+    ParticleSystem& ps;
+    std::size_t n;
+    bool done = false;
+    void now() {
+      if (done) return;
+      done = true;
+      a.x.resize(n);
+      a.z.resize(n);
+      a.h.resize(n);
+      a.obj.resize(n);
+      ps.x = std::move(a.x);
+      ps.z = std::move(a.z);
+      ps.h = std::move(a.h);
+      ps.object = std::move(a.obj);
+    }
+    ~GiveBack() { now(); }
+  } lent{a, ps, n};
   a.resize(n);
   double hmax = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -205,18 +224,9 @@ MassAdjustReport adjustMasses(ParticleSystem& ps, const MassAdjustOptions& opt) 
   list = NeighbourList();
   std::vector<double>().swap(wCache);
   std::vector<double>().swap(rho);
-  ps.m.resize(n);
   for (std::size_t i = 0; i < n; ++i)
     ps.m[i] = rz ? 2.0 * std::numbers::pi * a.rw[i] * a.mu[i] : a.mu[i];
-  // The reals' x, z, h and object back to ps (the ghosts after them dropped).
-  const auto giveBack = [n](auto& from, auto& to) {
-    from.resize(n);
-    to = std::move(from);
-  };
-  giveBack(a.x, ps.x);
-  giveBack(a.z, ps.z);
-  giveBack(a.h, ps.h);
-  giveBack(a.obj, ps.object);
+  lent.now();
   if (report.deleted > 0) ps.compact(alive);
   return report;
 }
