@@ -43,9 +43,9 @@ void checkAxisymmetric(const TableReader& b, const Body& body, double tol) {
 }
 
 // Memory per work item, peak RSS against items (docs/performance.md, tools/bench_effects.py
-// --memory): ~600 B per SPH particle, the peak being the mass iteration's set-up (its list
-// caches W: 12 B per slot, ~30 slots) and the stepper's list holding indices only (4 B per slot,
-// ~42 slots on variant 2's lattice); ~1.3 KiB with strength, whose pass needs the compatible
+// --memory): ~380 B per SPH particle, the peak being the stepping (state and derived values
+// ~150 B, step arrays ~100 B, the half-row list of indices ~120 B; the set-up and an output stay
+// below it: docs/performance.md, "SPH memory"); ~1.3 KiB with strength, whose pass needs the compatible
 // energy's pair data stored (16 B more per slot) and its own per-particle arrays; ~100 B per TVD cell
 // (conserved state, 32 B, and a snapshot's fields, 56 B, at an output; the sweep buffers are per
 // line and thread: issue 17, measured 89 B marginal and 94-100 B per cell on 2-4 million cells),
@@ -56,7 +56,7 @@ void checkAxisymmetric(const TableReader& b, const Body& body, double tol) {
 // caps keep a run near 12 GiB, under the 24 GiB of the machines this project targets, and keep
 // item counts far from integer overflow; a scene beyond them is refused before anything is
 // allocated.
-constexpr double kMaxParticles = 2e7;
+constexpr double kMaxParticles = 3e7;
 constexpr double kMaxParticlesWithStrength = 8e6;
 constexpr double kMaxCells = 1.2e8;
 constexpr double kMaxCellsWithMarkers = 2.5e7;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "detail/arrays.hpp"
 #include "detail/list_build.hpp"
 #include "hvi/sph/kernel.hpp"
 
@@ -25,7 +26,6 @@ void CellGrid::build(const double* x, const double* z, const double* h, std::siz
     inv_ = 1.0;
     nx_ = nz_ = 1;
     start_.assign(2, 0);
-    cellOf_.clear();
     order_.clear();
     sx_.clear();
     sz_.clear();
@@ -49,23 +49,23 @@ void CellGrid::build(const double* x, const double* z, const double* h, std::siz
   nz_ = static_cast<int>((zmax - zmin) * inv_) + 1;
   const std::size_t ncell = static_cast<std::size_t>(nx_) * static_cast<std::size_t>(nz_);
   start_.assign(ncell + 1, 0);
-  cellOf_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const int c = cellZ(z[i]) * nx_ + cellX(x[i]);
-    cellOf_[i] = c;
-    ++start_[static_cast<std::size_t>(c) + 1];
-  }
+  // The cell of a point is found twice (counting, placing) rather than stored: 4 B per point
+  // less, the same cells (the same operations).
+  const auto cellOf = [&](std::size_t i) {
+    return static_cast<std::size_t>(cellZ(z[i]) * nx_ + cellX(x[i]));
+  };
+  for (std::size_t i = 0; i < n; ++i) ++start_[cellOf(i) + 1];
   for (std::size_t c = 0; c < ncell; ++c) start_[c + 1] += start_[c];
-  order_.resize(n);
-  sx_.resize(n);
-  sz_.resize(n);
-  sh_.resize(n);
+  detail::growExactly(order_, n);
+  detail::growExactly(sx_, n);
+  detail::growExactly(sz_, n);
+  detail::growExactly(sh_, n);
   // Stable counting sort: within a cell the points keep their index order (deterministic).
-  next_.assign(start_.begin(), start_.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) {
-    const int s = next_[static_cast<std::size_t>(cellOf_[i])]++;
-    order_[static_cast<std::size_t>(s)] = static_cast<int>(i);
-  }
+  // start_[c] runs through cell c as its points are placed, ending at cell c + 1's start;
+  // shifted back by one cell afterwards.
+  for (std::size_t i = 0; i < n; ++i) order_[static_cast<std::size_t>(start_[cellOf(i)]++)] = static_cast<int>(i);
+  for (std::size_t c = ncell; c > 0; --c) start_[c] = start_[c - 1];
+  start_[0] = 0;
   for (std::size_t s = 0; s < n; ++s) {
     const int i = order_[s];
     sx_[s] = x[i];

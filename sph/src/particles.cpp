@@ -28,6 +28,7 @@ void ParticleSystem::push(double px, double pz, double pvx, double pvz, double p
 
 void ParticleSystem::compact(const std::vector<unsigned char>& keep) {
   forEachArray(*this, [&keep](auto& v) {
+    if (v.empty()) return;  // an array not held (SphSolver's set-up drops rho, p, c)
     std::size_t k = 0;
     for (std::size_t i = 0; i < v.size(); ++i)
       if (keep[i]) v[k++] = v[i];

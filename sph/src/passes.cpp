@@ -271,14 +271,28 @@ struct HalfAcc {
   // to the other ends within a block's length past its end (a lattice's rows reach a few
   // thousand indices); farther ones (another body in contact, filled elsewhere in the order) become
   // records, so that a few such pairs do not make a block's spill as long as the particles.
-  std::size_t begin(long b, long b0, long b1) const {
+  //
+  // Where block b's spill of field f lies: in the arrays the stepper lends
+  // (NeighbourList::lentSpill, F of them: f's at b * bs, which holds a span <= bs, the last
+  // block's span being 0) or else in the list's own spill (f's at f * span).
+  double* spill(long b, int f, std::size_t span) const {
+    if (list.lentSpillCount >= F)
+      return list.lentSpill[static_cast<std::size_t>(f)] + static_cast<std::size_t>(b * bs);
+    return list.spill[static_cast<std::size_t>(b)].data() + static_cast<std::size_t>(f) * span;
+  }
+  std::size_t begin(long b, long b0, long b1, double** sp) const {
     int far = static_cast<int>(b1);
     for (long i = b0; i < b1; ++i) far = std::max(far, list.reach[static_cast<std::size_t>(i)]);
     const auto span = static_cast<std::size_t>(std::min<long>(far - b1, bs));
     const auto bu = static_cast<std::size_t>(b);
-    std::vector<double>& sp = list.spill[bu];
-    if (sp.size() < F * span) sp.resize(F * span);
-    std::fill(sp.begin(), sp.begin() + static_cast<long>(F * span), 0.0);
+    if (list.lentSpillCount < F) {
+      std::vector<double>& own = list.spill[bu];
+      if (own.size() < F * span) own.resize(F * span);
+    }
+    for (int f = 0; f < F; ++f) {
+      sp[f] = spill(b, f, span);
+      std::fill(sp[f], sp[f] + span, 0.0);
+    }
     list.spillSpan[bu] = span;
     list.farJ[bu].clear();
     list.farV[bu].clear();
@@ -287,7 +301,7 @@ struct HalfAcc {
   }
   // Adds the other-end terms v[f][k] of row entries k (neighbours nb) to their particles.
   void scatter(long b, const int* nb, int cnt, double* const* v, long b1, std::size_t span,
-               double* sp) const {
+               double* const* sp) const {
     for (int k = 0; k < cnt; ++k) {
       const long j = nb[k];
       if (j >= nr) continue;  // a ghost: no rate
@@ -295,7 +309,7 @@ struct HalfAcc {
         for (int f = 0; f < F; ++f) add(f, acc[f][j], v[f][k]);
       } else if (static_cast<std::size_t>(j - b1) < span) {
         const auto o = static_cast<std::size_t>(j - b1);
-        for (int f = 0; f < F; ++f) add(f, sp[static_cast<std::size_t>(f) * span + o], v[f][k]);
+        for (int f = 0; f < F; ++f) add(f, sp[f][o], v[f][k]);
       } else {
         const auto bu = static_cast<std::size_t>(b);
         list.farJ[bu].push_back(static_cast<int>(j));
@@ -327,9 +341,10 @@ struct HalfAcc {
       const std::size_t span = list.spillSpan[static_cast<std::size_t>(b)];
       const long hi = std::min(c1, bb1 + static_cast<long>(span));
       if (hi <= c0) continue;
-      const double* sp = list.spill[static_cast<std::size_t>(b)].data();
-      for (int f = 0; f < F; ++f)
-        for (long j = c0; j < hi; ++j) add(f, acc[f][j], sp[static_cast<std::size_t>(f) * span + static_cast<std::size_t>(j - bb1)]);
+      for (int f = 0; f < F; ++f) {
+        const double* sp = spill(b, f, span);
+        for (long j = c0; j < hi; ++j) add(f, acc[f][j], sp[static_cast<std::size_t>(j - bb1)]);
+      }
     }
   }
 };
@@ -382,8 +397,8 @@ void halfPass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
 #pragma omp for schedule(static)
     for (long b = 0; b < nb; ++b) {
       const long b0 = b * acc.bs, b1 = std::min(nr, b0 + acc.bs);
-      const std::size_t span = acc.begin(b, b0, b1);
-      double* sp = list.spill[static_cast<std::size_t>(b)].data();
+      double* sp[F];
+      const std::size_t span = acc.begin(b, b0, b1, sp);
       for (long il = b0; il < b1; ++il) {
         const std::size_t i = static_cast<std::size_t>(il);
         const int cnt = list.count[i];
@@ -439,8 +454,8 @@ void halfRemainder(const PairArrays& a, std::size_t nReal, const NeighbourList& 
 #pragma omp for schedule(static)
     for (long b = 0; b < nb; ++b) {
       const long b0 = b * acc.bs, b1 = std::min(nr, b0 + acc.bs);
-      const std::size_t span = acc.begin(b, b0, b1);
-      double* sp = list.spill[static_cast<std::size_t>(b)].data();
+      double* sp[1];
+      const std::size_t span = acc.begin(b, b0, b1, sp);
       for (long il = b0; il < b1; ++il) {
         const std::size_t i = static_cast<std::size_t>(il);
         const int cnt = list.count[i];
@@ -525,6 +540,16 @@ int laneWidth() {
 
 bool halfListsAvailable(cases::Kernel kernel, bool rz) {
   return kernel == cases::Kernel::Gaussian && !rz && laneWidth() >= 4;
+}
+
+RowWKernel rowWKernel() {
+  static const RowWKernel k = [] {
+    RowWKernel r = nullptr;
+    if (laneWidth() >= 8) r = rowWKernelAvx512();
+    if (!r && laneWidth() >= 4) r = rowWKernelAvx2();
+    return r ? r : rowWKernelBaseline();
+  }();
+  return k;
 }
 
 ScanKernel scanKernel() {

@@ -133,44 +133,55 @@ SphSolver::SphSolver(const cases::Scene& scene) : SphSolver(scene, filledBodies(
 SphSolver::SphSolver(const cases::Scene& scene, ParticleSystem ps) : scene_(scene) {
   validate(scene_);
   materials_ = sceneMaterials(scene_);
+  // Set-up memory (docs/performance.md, "SPH memory"): rho, p and c are derived by the
+  // stepper's corrector, so they are not held through the mass iteration; the filled arrays,
+  // grown by push_back to up to twice their size, are cut to size.
+  for (auto* v : {&ps.rho, &ps.p, &ps.c}) std::vector<double>().swap(*v);
+  for (auto* v : {&ps.x, &ps.z, &ps.vx, &ps.vz, &ps.e, &ps.m, &ps.h, &ps.rhoRef}) v->shrink_to_fit();
+  ps.material.shrink_to_fit();
+  ps.object.shrink_to_fit();
+  ps.id.shrink_to_fit();
   if (scene_.has(cases::Effect::MassAdjustment))
     massReport_ = adjustMasses(ps, massAdjustOptions(scene_));
   stepper_ = std::make_unique<Stepper>(std::move(ps), materials_, stepperConfig(scene_));
 }
 
 Snapshot SphSolver::snapshot() const {
+  // The step's work space is dead between steps: freed before the copies are made, so that
+  // an output does not raise the run's peak memory (docs/performance.md, "SPH memory").
+  stepper_->releaseWork();
   ParticleSystem ps = stepper_->particles();
   const std::size_t np = ps.size();
   Snapshot s = makeSnapshot("sph", Snapshot::Kind::Particles, scene_.geometry, stepper_->time(),
                             stepper_->stepCount());
-  // Each array of the copy is freed once its field holds it: the output's peak memory is one
-  // copy of the state, not two (docs/performance.md, "SPH memory").
+  // The copy's double arrays become fields (moved), the others are freed once their field
+  // holds them: the output's peak memory is one copy of the state, not two.
   const auto release = [](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); };
+  const bool phases = scene_.has(cases::Effect::PhaseBookkeeping);
   s.positions.resize(np);
   for (std::size_t i = 0; i < np; ++i) s.positions[i] = {ps.x[i], ps.z[i]};
   release(ps.x);
   release(ps.z);
+  release(ps.rhoRef);
   using Q = Quantity;
-  addField(s, Q::Density, ps.rho);
-  release(ps.rho);
-  addField(s, Q::Pressure, ps.p);
-  release(ps.p);
+  addField(s, Q::Density, std::move(ps.rho));
+  addField(s, Q::Pressure, std::move(ps.p));
   addField(s, Q::Velocity, ps.vx, ps.vz);
   release(ps.vx);
   release(ps.vz);
-  addField(s, Q::SpecificEnergy, ps.e);
-  addField(s, Q::SoundSpeed, ps.c);
-  release(ps.c);
-  addField(s, Q::Mass, ps.m);
-  release(ps.m);
+  if (phases)  // the phase fields below read e
+    addField(s, Q::SpecificEnergy, ps.e);
+  else
+    addField(s, Q::SpecificEnergy, std::move(ps.e));
+  addField(s, Q::SoundSpeed, std::move(ps.c));
+  addField(s, Q::Mass, std::move(ps.m));
   addField(s, Q::Material, ps.material);
   addField(s, Q::Object, ps.object);
   release(ps.object);
-  addField(s, Q::SmoothingLength, ps.h);
-  release(ps.h);
+  addField(s, Q::SmoothingLength, std::move(ps.h));
   addField(s, Q::Id, ps.id);
   release(ps.id);
-  if (scene_.has(cases::Effect::PhaseBookkeeping)) {
+  if (phases) {
     Field frac = makeField(Q::VapourFraction, s.geometry, np);
     Field phase = makeField(Q::Phase, s.geometry, np);
     for (std::size_t i = 0; i < np; ++i) {

@@ -59,10 +59,12 @@ Stepper::Impl::Impl(ParticleSystem ps, std::vector<eos::Eos> mats, StepperConfig
     if (k < 0 || k >= static_cast<int>(materials.size()))
       throw InputError(
           fmt::format("particle material {} is not one of the {} materials", k, materials.size()));
-  a.resize(n);
   // Indices only (docs/performance.md, "SPH memory"): the passes recompute W_ij.
   list.cacheW = false;
   forEachState(*this, [&ps](auto member, auto& v) { v = std::move(ps.*member); });
+  // Arrays filled by push_back grew to up to twice their size: cut to size.
+  forEachState(*this, [](auto, auto& v) { v.shrink_to_fit(); });
+  a.resize(n);  // after the moves: the arrays taken over are not allocated twice
   ps = ParticleSystem();  // rho, p, c: corrector() derives them
   if (!cfg.strength.empty()) {
     if (cfg.strength.size() != materials.size() || cfg.strengthRho0.size() != materials.size())
@@ -166,7 +168,11 @@ void Stepper::Impl::corrector() {
   double hmax = 0.0;
   for (std::size_t i = 0; i < n; ++i) hmax = std::max(hmax, a.h[i]);
   bounds.makeGhosts(a, n, radiusFactor * hmax);
+  // The grid's sorted copies (x, z, h of reals and ghosts) in x0, z0 and vx0, dead from the
+  // full step to the predictor.
+  grid.swapSorted(x0, z0, vx0);
   passList(a, n, radiusFactor, grid, list, a.rho.data());
+  grid.swapSorted(x0, z0, vx0);
   if (ring)  // the list build sums nu_j W_ij = s_i rho_i
     for (std::size_t i = 0; i < n; ++i) a.rho[i] /= a.rs[i];
   detail::evaluateEos(materials, mat.data(), a.rho.data(), e.data(), a.p.data(), a.c.data(), n);
@@ -188,10 +194,14 @@ void Stepper::Impl::axisMatrix() {
 void Stepper::Impl::compatibleRemainder(double half) {
   // docs/sph.md, "Energy": the change of acceleration over the step, on ghosts as on their
   // parents (mirrored), is what the midpoint velocity adds to the half-state pair work.
+  // a^{n+1/2} - a^n in drho0 and phi0 (dead since the predictor and the time step), sized to
+  // the reals and ghosts; the half rows' sums in de0 (dead since the predictor).
+  std::vector<double>& dax = drho0;
+  std::vector<double>& daz = phi0;
   const std::size_t total = a.size();
   if (dax.size() < total) {
-    dax.resize(total);
-    daz.resize(total);
+    detail::growExactly(dax, total);
+    detail::growExactly(daz, total);
   }
   const long nl = static_cast<long>(n);
 #pragma omp parallel for schedule(static) if (nl > detail::kParallelElements)
@@ -200,12 +210,17 @@ void Stepper::Impl::compatibleRemainder(double half) {
     daz[i] = az1[i] - az0[i];
   }
   bounds.mirrorGhostVectors(dax.data(), daz.data(), n);
-  if (storePairs)
+  if (storePairs) {
     detail::compatibleEnergy(list, n, pairWx.data(), pairWz.data(), dax.data(), daz.data(),
                              a.rs.data(), rz ? hoopAx.data() : nullptr, half, de1.data());
-  else
+  } else {
+    list.sums.swap(de0);
+    lendSpill({&ax0});  // dead once da is formed
     passRemainder(a, n, list, cfg.visc, dax.data(), daz.data(), rz ? hoopAx.data() : nullptr,
                   half, de1.data());
+    lendSpill({});
+    list.sums.swap(de0);
+  }
 }
 
 double Stepper::Impl::particleTimeStep(std::size_t i, bool* byAcceleration) const {
@@ -300,12 +315,16 @@ double Stepper::step(double tStop) {
     ++s.steps;
     return dt;
   }
+  if (s.workReleased) s.resizeWork();
   detail::PairArrays& a = s.a;
   const long nl = static_cast<long>(s.n);
   const detail::Rates ratesN{s.ax0.data(), s.az0.data(), s.de0.data(), s.drho0.data(),
                              s.phi0.data()};
   s.axisMatrix();
+  // Half rows' spills in arrays dead during each pass (docs/performance.md, "SPH memory").
+  s.lendSpill({&s.x0, &s.z0, &s.vx0, &s.vz0, &s.e0});
   s.passCached(a, s.n, s.list, s.cfg.visc, s.axis.get(), s.ring, ratesN);
+  s.lendSpill({});
   if (s.strength) s.strength->pass(a, s.n, s.list, true, s.axis.get(), ratesN);
   double dt = s.timeStep();
   if (s.dt0 == 0.0 && dt > 0.0 && std::isfinite(dt)) s.dt0 = dt;
@@ -323,7 +342,6 @@ double Stepper::step(double tStop) {
     s.vx0[i] = a.vx[i];
     s.vz0[i] = a.vz[i];
     s.e0[i] = s.e[i];
-    s.rho0[i] = a.rho[i];
     a.x[i] += half * a.vx[i];
     a.z[i] += half * a.vz[i];
     a.vx[i] += half * s.ax0[i];
@@ -385,7 +403,9 @@ double Stepper::step(double tStop) {
     ratesHalf.hoopAx = s.rz ? s.hoopAx.data() : nullptr;
   }
   s.axisMatrix();
+  s.lendSpill({&s.de0, &s.drho0, &s.phi0});
   s.passFresh(a, s.n, s.list, s.cfg.visc, s.axis.get(), s.ring, ratesHalf);
+  s.lendSpill({});
   // Before the compatible remainder: the stress accelerations are part of a^{n+1/2} - a^n.
   if (s.strength) s.strength->pass(a, s.n, s.list, false, s.axis.get(), ratesHalf);
   if (s.compatible) s.compatibleRemainder(half);
@@ -413,6 +433,7 @@ double Stepper::step(double tStop) {
   return dt;
 }
 
+void Stepper::releaseWork() { impl_->releaseWork(); }
 double Stepper::time() const { return impl_->t; }
 long Stepper::stepCount() const { return impl_->steps; }
 std::size_t Stepper::size() const { return impl_->n; }

@@ -5,6 +5,14 @@
 
 namespace hvi::sph::detail {
 
+//! Resizes v to n, growing its capacity to n plus 1/16 (room for a varying ghost count)
+//! instead of std::vector's doubling, which would hold up to twice the particles' memory.
+template <class V>
+void growExactly(V& v, std::size_t n) {
+  if (v.capacity() < n) v.reserve(v.empty() ? n : n + n / 16);
+  v.resize(n);
+}
+
 //! Per-particle values of the pair sums (pair_force.hpp's PairState as arrays). Real particles
 //! come first; ghosts follow and hold copies of their parents (mirrored position, velocity).
 struct PairArrays {
@@ -40,7 +48,7 @@ struct PairArrays {
     f(h); f(obj);
   }
   void resize(std::size_t n) {
-    const auto sized = [n](auto& v) { v.resize(n); };
+    const auto sized = [n](auto& v) { growExactly(v, n); };
     for (auto* v : {&x, &z}) sized(*v);
     if (!lean) for (auto* v : {&vx, &vz}) sized(*v);
     forEachCopied(sized);

@@ -50,6 +50,16 @@ using ScanKernel = int (*)(const double* sx, const double* sz, const double* sh,
                            int* slot, double* w, int cnt, int last);
 ScanKernel scanKernel();  //!< AVX-512 where the CPU has it, else baseline
 
+//! The Gaussian W_ij of row i's cnt neighbours nb into w (which has room for a lane width past
+//! cnt), as the scan computed them: the same bits (the mass iteration recomputes them per
+//! sweep instead of caching them).
+using RowWKernel = void (*)(const double* x, const double* z, const double* h, std::size_t i,
+                            const int* nb, int cnt, double* w);
+RowWKernel rowWKernel();  //!< the widest the CPU has (laneWidth)
+RowWKernel rowWKernelBaseline();
+RowWKernel rowWKernelAvx512();  //!< null without compiler support
+RowWKernel rowWKernelAvx2();    //!< null without compiler support
+
 //! The kernel for the policy, for baseline x86-64 (2 lanes). `half` (planar only, else null):
 //! the kernel also writes the j side's terms (RowTerms::axj ...) for half lists.
 RowKernel rowKernelBaseline(bool rz, bool viscous, bool cached, bool compatible,

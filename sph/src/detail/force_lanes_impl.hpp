@@ -228,6 +228,21 @@ RowKernel pick1(bool viscous, bool cached, bool compatible) {
                  : pick2<RZ, false, Half>(cached, compatible);
 }
 
+// The Gaussian W_ij of row i's neighbours nb[0, cnt) into w (room for the lanes past cnt):
+// scan's distances and gaussianW, the same bits as the list build found them.
+void rowW(const double* x, const double* z, const double* h, std::size_t i, const int* nb,
+          int cnt, double* w) {
+  const double xi = x[i], zi = z[i], hi = h[i];
+  for (int k = 0; k < cnt; k += L) {
+    int idx[L];
+    for (int l = 0; l < L; ++l) idx[l] = nb[k + l < cnt ? k + l : cnt - 1];
+    const D dx = xi - gather(x, idx), dz = zi - gather(z, idx);
+    const D r2 = dx * dx + dz * dz;
+    const D hij = 0.5 * (hi + gather(h, idx));
+    store(w + k, gaussianW(r2, hij));
+  }
+}
+
 }  // namespace
 
 RowKernel pick(bool rz, bool viscous, bool cached, bool compatible, bool half) {
@@ -236,5 +251,7 @@ RowKernel pick(bool rz, bool viscous, bool cached, bool compatible, bool half) {
   return rz ? pick1<true, false>(viscous, cached, compatible)
             : pick1<false, false>(viscous, cached, compatible);
 }
+
+RowWKernel rowWKernel() { return &rowW; }
 
 }  // namespace hvi::sph::detail::HVI_LANES_NS

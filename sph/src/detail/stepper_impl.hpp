@@ -2,7 +2,9 @@
 #pragma once
 #include <string>
 #include <cstdint>
+#include <initializer_list>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 #include "detail/arrays.hpp"
@@ -53,11 +55,37 @@ struct Stepper::Impl {
   // until it is listed.
   static_assert(sizeof(ParticleSystem) == 14 * sizeof(std::vector<double>));
   // Sizes the step work arrays to the n real particles (never stored: each step rewrites them).
+  // hoopAx only in r-z (the planar passes do not write it).
   void resizeWork() {
-    for (auto* v : {&x0, &z0, &vx0, &vz0, &e0, &rho0, &ax0, &az0, &de0, &drho0, &phi0, &ax1, &az1,
-                    &de1, &hoopAx})
+    for (auto* v : {&x0, &z0, &vx0, &vz0, &e0, &ax0, &az0, &de0, &drho0, &phi0, &ax1, &az1, &de1})
       v->resize(n);
+    hoopAx.resize(rz ? n : 0);
     keep.resize(n);
+    workReleased = false;
+  }
+  // Lends the half passes the arrays `v` (each of at least n) for their spills, or none.
+  void lendSpill(std::initializer_list<std::vector<double>*> v) {
+    int k = 0;
+    for (auto* a : v) list.lentSpill[k++] = a->data();
+    list.lentSpillCount = k;
+  }
+  // Frees the work space that is dead between steps (the step arrays, the grid, the half
+  // passes' spills, the stored pair data), for an output's peak memory (docs/performance.md,
+  // "SPH memory"); the next step sizes it again. The state, the derived values and the list
+  // (the next step's first pass reads it) stay.
+  void releaseWork() {
+    const auto release = [](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); };
+    for (auto* v : {&x0, &z0, &vx0, &vz0, &e0, &ax0, &az0, &de0, &drho0, &phi0, &ax1, &az1, &de1,
+                    &hoopAx, &pairWx, &pairWz, &dmu})
+      release(*v);
+    release(keep);
+    grid.release();
+    release(list.spill);
+    release(list.spillSpan);
+    release(list.farJ);
+    release(list.farV);
+    release(list.sums);
+    workReleased = true;
   }
 
   StepperConfig cfg;
@@ -84,14 +112,20 @@ struct Stepper::Impl {
   std::vector<int> mat;
   std::vector<std::int64_t> id;
 
-  // Step work arrays (reals only), sized once; the step loop allocates nothing.
-  std::vector<double> x0, z0, vx0, vz0, e0, rho0;
+  // Step work arrays (reals only), sized once; the step loop allocates nothing (an output's
+  // releaseWork() aside). Arrays dead in part of the step lend their storage there
+  // (docs/performance.md, "SPH memory"): x0, z0 and vx0 hold the grid's sorted copies during
+  // the list build, drho0 and phi0 the compatible remainder's a^{n+1/2} - a^n (then sized to
+  // the reals and ghosts), de0 its per-particle sums; the half passes' spills lie in x0 ... e0
+  // (state n), de0, drho0, phi0 (half state) and ax0 (remainder): lendSpill.
+  std::vector<double> x0, z0, vx0, vz0, e0;
   std::vector<double> ax0, az0, de0, drho0, phi0, ax1, az1, de1;
-  // Compatible energy: hoop acceleration (reals), a^{n+1/2} - a^n (reals and ghosts), and per
-  // list entry w_ij times the pair acceleration summand (docs/sph.md, "Energy").
-  std::vector<double> hoopAx, dax, daz, pairWx, pairWz;
+  // Compatible energy: hoop acceleration (reals, r-z), and per list entry w_ij times the pair
+  // acceleration summand (docs/sph.md, "Energy").
+  std::vector<double> hoopAx, pairWx, pairWz;
   std::vector<double> dmu;  // r-z predictor: mu^{n+1/2} - mu^n (reals and ghosts)
   std::vector<unsigned char> keep;
+  bool workReleased = false;  // releaseWork() since the last resizeWork()
 
   CellGrid grid;
   NeighbourList list;

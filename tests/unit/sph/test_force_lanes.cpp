@@ -23,6 +23,7 @@
 #include "detail/force_lanes.hpp"
 #include "detail/passes.hpp"
 #include "hvi/sph/kernel.hpp"
+#include "hvi/sph/neighbours.hpp"
 #include "hvi/sph/pair_force.hpp"
 
 namespace hvi::sph {
@@ -332,6 +333,49 @@ void checkScan(detail::ScanKernel scan, const char* name) {
       EXPECT_EQ(w[ku], expW[ku]) << "room " << room << " slot " << k;
     }
   }
+}
+
+// The mass iteration recomputes W_ij per sweep for the rows it does not cache
+// (docs/performance.md, "SPH memory"): every lane width must give the list build's cached W
+// bit for bit, also with mixed smoothing lengths and ghost-like points past the reals.
+TEST(ForceLanes, RowWeightsAreTheListBuildsBitForBit) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const std::size_t n = 900, nReal = 800;
+  std::vector<double> x(n), z(n), h(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    x[i] = u(rng);
+    z[i] = 0.8 * u(rng);
+    h[i] = i % 5 ? 0.025 : 0.04;
+  }
+  CellGrid grid;
+  NeighbourList list;  // caches W
+  buildNeighbourList(x.data(), z.data(), h.data(), n, nReal, 3.0, grid, list);
+#if defined(__x86_64__) || defined(__i386__)
+  const bool avx2 = __builtin_cpu_supports("avx2");
+  const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+                      __builtin_cpu_supports("avx512vl");
+#else
+  const bool avx2 = false, avx512 = false;
+#endif
+  int checked = 0;
+  for (detail::RowWKernel k :
+       {detail::rowWKernelBaseline(), avx2 ? detail::rowWKernelAvx2() : nullptr,
+        avx512 ? detail::rowWKernelAvx512() : nullptr, detail::rowWKernel()}) {
+    if (!k) continue;
+    std::vector<double> w(list.stride + 8);
+    for (std::size_t i = 0; i < nReal; ++i) {
+      k(x.data(), z.data(), h.data(), i, list.index.data() + list.start[i], list.count[i],
+        w.data());
+      for (int m = 0; m < list.count[i]; ++m)
+        ASSERT_EQ(std::memcmp(&w[static_cast<std::size_t>(m)],
+                              &list.w[list.start[i] + static_cast<std::size_t>(m)], sizeof(double)),
+                  0)
+            << "row " << i << " slot " << m;
+    }
+    ++checked;
+  }
+  EXPECT_GE(checked, 2);
 }
 
 TEST(ForceLanes, ListScanKeepsThePairsOfTheOneAtATimeLoop) {

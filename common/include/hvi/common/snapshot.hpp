@@ -128,6 +128,13 @@ void addField(Snapshot& s, Quantity q, const std::vector<T>& v) {
   s.fields.push_back(std::move(f));
 }
 
+//! Appends the one-component field `q`, taking the values over (no copy: an output's peak
+//! memory holds them once).
+inline void addField(Snapshot& s, Quantity q, std::vector<double>&& v) {
+  const FieldSpec f = fieldSpec(q, s.geometry);
+  s.fields.push_back({f.name, f.unit, f.components, std::move(v)});
+}
+
 //! Appends the two-component field `q` (a vector) from its components, interleaved.
 inline void addField(Snapshot& s, Quantity q, const std::vector<double>& x,
                      const std::vector<double>& z) {

@@ -26,10 +26,21 @@ class CellGrid {
   [[nodiscard]] const double* sortedZ() const { return sz_.data(); }
   [[nodiscard]] const double* sortedH() const { return sh_.data(); }
 
+  //! Exchanges the storage of the sorted x, z, h with three of the caller's arrays (the
+  //! stepper lends the grid arrays that are dead during the list build: docs/performance.md,
+  //! "SPH memory"). The next build() sizes them.
+  void swapSorted(std::vector<double>& x, std::vector<double>& z, std::vector<double>& h) {
+    sx_.swap(x);
+    sz_.swap(z);
+    sh_.swap(h);
+  }
+  //! Frees the arrays; the next build() allocates them again.
+  void release() { *this = CellGrid(); }
+
  private:
   int nx_ = 0, nz_ = 0;
   double x0_ = 0.0, z0_ = 0.0, inv_ = 1.0;
-  std::vector<int> start_, order_, cellOf_, next_;
+  std::vector<int> start_, order_;
   std::vector<double> sx_, sz_, sh_;
 };
 
@@ -67,6 +78,11 @@ struct NeighbourList {
   mutable std::vector<std::vector<int>> farJ;      //!< per block: other ends beyond the spill
   mutable std::vector<std::vector<double>> farV;   //!< and their terms
   mutable std::vector<double> sums;
+  //! Half rows: arrays of at least the real particles' count, dead during a pass, that the
+  //! stepper lends for the spills (one per accumulated field; used when there are enough for
+  //! the pass), instead of `spill` (docs/performance.md, "SPH memory").
+  mutable double* lentSpill[5] = {};
+  mutable int lentSpillCount = 0;
 };
 
 //! Brute-force-checkable entry point: lists, for the first `nReal` of `n` points, every other

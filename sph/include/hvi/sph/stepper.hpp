@@ -90,6 +90,10 @@ class Stepper {
   //! a non-finite or non-positive state, naming the particle, its state and the step.
   double step(double tStop);
 
+  //! Frees the work space that is dead between steps (step arrays, cell grid, scratch), so that
+  //! an output's copies do not add to it; the next step allocates it again. No result changes.
+  void releaseWork();
+
   [[nodiscard]] double time() const;
   [[nodiscard]] long stepCount() const;
   [[nodiscard]] std::size_t size() const;  //!< real particles
