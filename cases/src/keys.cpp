@@ -159,7 +159,9 @@ constexpr std::array<KeyRow<TvdParams>, 7> kTvd{{
     {.key = "outflow", .kind = K::Choice, HVI_KEY_FIELD(TvdParams, outflow),
      .choices = outflowModeNames,
      .docValue = "`\"open\"` (zero-gradient ghost: material may re-enter), `\"no_reentry\"` "
-                 "(a phase moving inwards meets a wall there; conservative interfaces)",
+                 "(a phase moving inwards meets a wall there; conservative interfaces), "
+                 "`\"no_reentry_cut\"` (the same, and the marker lines are cut at the side; an "
+                 "experiment, docs/tvd.md)",
      .docDefault = "`\"open\"`"},
 }};
 

@@ -152,15 +152,16 @@ void checkSphFill(const TableReader& root, const Scene& scene, const Sources& sr
   }
 }
 
-// tvd.outflow = "no_reentry" is a rule of the cut cells' phase faces (docs/tvd.md, "Outflow
-// sides: no re-entry"): the conservative interface mode only.
+// tvd.outflow = "no_reentry" (and "no_reentry_cut") is a rule of the cut cells' phase faces
+// (docs/tvd.md, "Outflow sides: no re-entry"): the conservative interface mode only.
 void checkTvdOutflow(const TableReader& root, const Scene& scene) {
-  if (scene.tvd.outflow == OutflowMode::NoReentry &&
+  if (scene.tvd.outflow != OutflowMode::Open &&
       !(scene.has(Effect::MaterialInterfaces) &&
         scene.tvd.interfaces == InterfaceMode::Conservative))
     root.subTable("tvd", true)
         ->fail("outflow",
-               "\"no_reentry\" acts on the phases of the conservative interface mode, which this "
+               "\"no_reentry\" and \"no_reentry_cut\" act on the phases of the conservative "
+               "interface mode, which this "
                "scene does not run",
                "tvd.outflow = \"open\", or effects with \"material_interfaces\" and "
                "tvd.interfaces = \"conservative\"");

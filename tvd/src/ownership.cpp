@@ -151,6 +151,7 @@ void Ownership::advanceLines(const Conserved& U, double dt, int rowLo, int rowHi
   centredVelocity(U, dt, rowLo, rowHi);
   extendIntoVacuum(2, rowLo, rowHi);
   markers_.advect(g, midX(), midZ(), dt, walls_, open_);
+  markers_.clipToSides(g, cut_);  // none in the whole-cell mode (setCutSides)
   markers_.redistribute(g);
 }
 

@@ -26,7 +26,8 @@ TvdSolver::~TvdSolver() = default;
 
 TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
     : geometry_(scene.geometry), domain_(scene.domain), params_(scene.tvd), options_(options) {
-  if (scene.tvd.outflow == cases::OutflowMode::NoReentry) options_.closedOutflow = true;
+  if (scene.tvd.outflow != cases::OutflowMode::Open) options_.closedOutflow = true;
+  if (scene.tvd.outflow == cases::OutflowMode::NoReentryCut) options_.cutOutflowLines = true;
   setUpGrid(scene);
   setUpMaterials(scene);
 #ifdef _OPENMP
@@ -55,11 +56,16 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
     ownership_.setMarkerWalls(options_.markerWalls);
     ownership_.setUp(scene, cellVolumes_, objectMaterial_, bodyStates_,
                      static_cast<int>(materials_.size()), threads_);
-    // docs/tvd.md, "Outflow sides: no re-entry" (Options::closedOutflow).
+    // docs/tvd.md, "Outflow sides: no re-entry" (Options::closedOutflow) and "Cutting the lines
+    // at outflow sides" (Options::cutOutflowLines).
     if (cut_ && options_.closedOutflow)
       for (int side = 0; side < 4; ++side)
         open[static_cast<std::size_t>(side)] =
             scene.domain.boundary[static_cast<std::size_t>(side)] == cases::Boundary::Outflow;
+    if (options_.cutOutflowLines) {
+      ownership_.setCutSides(open);
+      open = {};
+    }
     ownership_.setOpenSides(open);
   }
   setUpStrength(scene);
@@ -69,6 +75,26 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
   }
   initialiseState(scene);
   if (markersOn_) ownership_.startTargets(U_);
+}
+
+// A body whose material has all left through the outflow sides (its phase holds no mass in the
+// domain, to 1e-13 of what it booked as outflow) loses its lines where the lines are cut at the
+// sides: its last sliver along the side would otherwise stay behind with no material, the
+// emptied edge cells giving its markers no velocity, and the repair would fill it from
+// round-off (TvdCutOutflow, a block leaving through zmax: the sliver's cells then moved at
+// 20 cm/us). docs/tvd.md, "Cutting the lines at outflow sides".
+void TvdSolver::dropEmptiedLines() {
+  if (!ownership_.cutsLines()) return;
+  const long nx = grid_.nx;
+  for (int p = 0; p < phases_.count; ++p) {
+    const double out = phaseOutflow_[static_cast<std::size_t>(p)];
+    if (!(out > 0.0)) continue;
+    const double* rho = phases_.q[static_cast<std::size_t>(p)].rho.data();
+    double mass = 0.0;
+    for (long c = phases_.rowLo * nx; c < phases_.rowHi * nx; ++c)
+      mass += std::abs(rho[c]) * cellVolumes_(c);
+    if (mass <= 1e-13 * out) ownership_.dropLines(p);
+  }
 }
 
 void TvdSolver::measurePhases() {
@@ -246,6 +272,7 @@ double TvdSolver::advance(double tStop) {
     limitThinVelocities(dt);
     sweepCut(step_ % 2 == 0 ? 0 : 1, dt);
     sweepCut(step_ % 2 == 0 ? 1 : 0, dt);
+    dropEmptiedLines();
     // The markers move with the mixture velocity (one phase: its own state, no copy needed).
     // The old fractions, for the repair, kept where nonzero; the lines' new fractions go into
     // their buffers (zero outside the rows, as move requires), which measurePhases takes back.

@@ -18,7 +18,7 @@ std::span<const std::string_view> kernelNames();    //!< gaussian, cubic_spline
 std::span<const std::string_view> latticeNames();   //!< square, hexagonal
 std::span<const std::string_view> limiterNames();   //!< minmod, van_leer, superbee
 std::span<const std::string_view> interfaceNames(); //!< whole_cell, conservative
-std::span<const std::string_view> outflowModeNames();  //!< open, no_reentry
+std::span<const std::string_view> outflowModeNames();  //!< open, no_reentry, no_reentry_cut
 std::span<const std::string_view> energyFormNames(); //!< compatible, symmetric
 std::span<const std::string_view> rzFormNames();     //!< auto, ring, symmetric
 std::span<const std::string_view> viscositySwitchNames();  //!< off, morris_monaghan

@@ -161,7 +161,7 @@ enum class Limiter { Minmod, VanLeer, Superbee };
 enum class InterfaceMode { WholeCell, Conservative };
 //! TVD cut-cell mode at outflow sides: the zero-gradient ghost (material may re-enter) or no
 //! re-entry (docs/tvd.md, "Outflow sides: no re-entry").
-enum class OutflowMode { Open, NoReentry };
+enum class OutflowMode { Open, NoReentry, NoReentryCut };
 
 struct TvdParams {
   double cellSize = 0.015;  //!< dx = dz, cm

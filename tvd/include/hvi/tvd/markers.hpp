@@ -90,6 +90,21 @@ class MarkerSet {
               std::array<bool, 4> walls = {}, std::array<bool, 4> open = {},
               bool oddWalls = false);
 
+  //! Cuts the lines at the grid's sides in `sides` (xmin, xmax, zmin, zmax; the cut-cell mode's
+  //! outflow sides): each closed line is clipped to the grid's half-planes of those sides
+  //! (Sutherland-Hodgman), so the part beyond a side is removed and the line is closed along the
+  //! side. The region inside is unchanged (crossing points on the side exactly; the other
+  //! coordinate interpolated, so an r-z axis point stays at x = 0), every line keeps its
+  //! direction, and a line with nothing left inside is removed. Where a line leaves and re-enters
+  //! the result joins its parts by zero-width runs along the side, which cover nothing (nonzero
+  //! rule; a segment along a grid line crosses none). Lines with no point beyond are not
+  //! touched. Call redistribute afterwards (the cut gives short edges). Returns the number of
+  //! lines removed. docs/markers.md, "Cutting at outflow sides".
+  long clipToSides(const GridSpec& grid, std::array<bool, 4> sides);
+
+  //! Removes every line of object `o`; returns how many.
+  long removeObject(int o);
+
   //! Keeps every segment between minCells*dx and maxCells*dx (defaults 0.5 and 2 times the
   //! spacing: 0.25 and 1.0 cells for the default 0.5-cell spacing): inserts markers on long
   //! segments (area unchanged) and collapses short segments into one point placed so that the

@@ -52,6 +52,14 @@ class Ownership {
   //! Cut-cell mode with Options::closedOutflow: the outflow sides (xmin, xmax, zmin, zmax)
   //! beyond which the marker lines stay put (MarkerSet::advect); none by default.
   void setOpenSides(std::array<bool, 4> open) { open_ = open; }
+  //! Cut-cell mode with Options::closedOutflow and cutOutflowLines: the outflow sides at which
+  //! the lines are cut after each move (MarkerSet::clipToSides). None by default.
+  void setCutSides(std::array<bool, 4> cut) { cut_ = cut; }
+  //! Cut-cell mode: removes the lines of object `o` (a body whose material has all left through
+  //! the outflow sides; TvdSolver::dropEmptiedLines). Returns how many.
+  long dropLines(int o) { return markers_.removeObject(o); }
+  //! Whether any side cuts the lines (setCutSides).
+  [[nodiscard]] bool cutsLines() const { return cut_[0] || cut_[1] || cut_[2] || cut_[3]; }
   //! Cut cells: markers on a wall stay on it, none crosses one (Options::markerWalls).
   void setMarkerWalls(bool on) { markerWalls_ = on; }
   //! The marker step of the cut-cell mode: moves and redistributes the lines, rebuilds the
@@ -139,6 +147,7 @@ class Ownership {
   std::vector<double> normalLength_;  // marker length per cell
   bool cutCells_ = false;
   std::array<bool, 4> open_{};  // cut-cell mode: the outflow sides (MarkerSet::advect)
+  std::array<bool, 4> cut_{};   // cut-cell mode: lines cut there (MarkerSet::clipToSides)
   bool markerWalls_ = true;
   std::array<bool, 4> walls_{};  //!< xmin, xmax, zmin, zmax hold the markers (cut cells)
   std::vector<std::vector<double>> fraction_;  // cut-cell mode: object fractions per cell

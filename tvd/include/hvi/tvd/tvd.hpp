@@ -44,6 +44,14 @@ struct Options {
   //! through its top side). Off because TvdCutOutflow's r-z scene then stops (open). The scene
   //! key tvd.outflow = "no_reentry" sets it.
   bool closedOutflow = false;
+  //! Cut-cell mode with closedOutflow, an experiment (off; the scene key tvd.outflow =
+  //! "no_reentry_cut" sets both): the marker lines are cut at the outflow sides after every
+  //! move (MarkerSet::clipToSides), so no line holds material that left, and a body whose mass
+  //! has all left loses its lines (docs/tvd.md "Cutting the lines at outflow sides"). false: the
+  //! earlier lines, whose markers beyond an outflow side stay put. The open outflow (the
+  //! default) keeps its lines: cut there, they either let the ghost's inflow be packed into the
+  //! edge cells or, held at the side, grew a jet (measured, same section).
+  bool cutOutflowLines = false;
   //! Cut-cell mode: a marker on a wall keeps its normal coordinate and none crosses a wall, so a
   //! body's side on a wall stays there (docs/markers.md; the spall scene's lateral tension
   //! pulled the phases off the walls, docs/strength.md "TVD fracture"). false: the earlier
@@ -152,6 +160,7 @@ class TvdSolver final : public Solver {
   static void addState(Conserved& U, std::size_t c, const Ownership::ObjectState& b,
                        double weight);
   void measurePhases();  // phases_ geometry from the marker lines (cut-cell mode)
+  void dropEmptiedLines();  // cut-cell mode: the lines of bodies that have all left
   double signalSpeedCut(double* vx, double* vz, long* worstCell) const;
   // Cut cells: each velocity component of a phase cell below the time-step density limited to
   // one cell per step (docs/tvd.md, "Thin cells faster than the step"), booked under floors.
