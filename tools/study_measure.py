@@ -56,7 +56,10 @@ def load_samples(h5path):
             x = f["particles/x"][...]
             z = f["particles/z"][...]
             m = f["fields/mass"][...]
-            if geometry == "rz":
+            if "fields/volume" in f:
+                # The symmetric r-z form's own particle area (docs/sph-rz.md), finite at the axis.
+                m = f["fields/volume"][...] * rho
+            elif geometry == "rz":
                 # Ring mass -> planar weight mu = m / (2 pi r) (docs/sph-rz.md); particles stay
                 # off the axis (r > 0), the guard only keeps a stray r = 0 finite.
                 m = m / (2.0 * np.pi * np.maximum(x, 1e-300))

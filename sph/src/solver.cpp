@@ -1,6 +1,7 @@
 //! @file The SPH solver: scene to particles, stepping, snapshots.
 #include "hvi/sph/sph.hpp"
 
+#include <numbers>
 #include <type_traits>
 
 #include <fmt/format.h>
@@ -9,6 +10,8 @@
 #include "hvi/common/error.hpp"
 #include "hvi/common/snapshot.hpp"
 #include "hvi/sph/fill.hpp"
+
+#include "detail/axis_correction.hpp"
 
 namespace hvi::sph {
 namespace {
@@ -158,6 +161,20 @@ Snapshot SphSolver::snapshot() const {
   // holds them: the output's peak memory is one copy of the state, not two.
   const auto release = [](auto& v) { std::remove_reference_t<decltype(v)>().swap(v); };
   const bool phases = scene_.has(cases::Effect::PhaseBookkeeping);
+  // r-z symmetric form: each particle's meridional area nu / (s rho) = m / (2 pi s(r)^2 rho), the
+  // weight its own density sum gives it (docs/sph-rz.md, "The symmetric form"); finite at the
+  // axis, which these particles may reach, where the ring area m / (2 pi r rho) diverges.
+  // Readers (hvi compare, tools/study_measure.py) use a field `volume` as the area when present.
+  std::vector<double> area;
+  if (scene_.geometry == Geometry::Axisymmetric &&
+      resolvedRzForm(scene_) == cases::RzForm::Symmetric) {
+    const detail::RingScale& ring = detail::ringScale(scene_.sph.kernel);
+    area.resize(np);
+    for (std::size_t i = 0; i < np; ++i) {
+      const double si = ring.value(std::abs(ps.x[i]), ps.h[i]);
+      area[i] = ps.m[i] / (2.0 * std::numbers::pi * si * si * ps.rho[i]);
+    }
+  }
   s.positions.resize(np);
   for (std::size_t i = 0; i < np; ++i) s.positions[i] = {ps.x[i], ps.z[i]};
   release(ps.x);
@@ -181,6 +198,7 @@ Snapshot SphSolver::snapshot() const {
   addField(s, Q::SmoothingLength, std::move(ps.h));
   addField(s, Q::Id, ps.id);
   release(ps.id);
+  if (!area.empty()) s.fields.push_back({"volume", "cm^2", 1, std::move(area)});
   if (phases) {
     Field frac = makeField(Q::VapourFraction, s.geometry, np);
     Field phase = makeField(Q::Phase, s.geometry, np);
