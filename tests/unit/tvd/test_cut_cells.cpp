@@ -26,15 +26,6 @@ double maxSpeed(const TvdSolver& s) {
   return v;
 }
 
-cases::Scene cutScene(double xmin, double xmax, double zmin, double zmax, double h,
-                      Geometry g = Geometry::Planar) {
-  cases::Scene s = baseScene(xmin, xmax, zmin, zmax, h, g);
-  s.effects.insert(cases::Effect::MaterialInterfaces);
-  s.effects.insert(cases::Effect::TensionCutoff);
-  s.tvd.interfaces = cases::InterfaceMode::Conservative;
-  return s;
-}
-
 TEST(TvdCutCells, FreePlateStaysAtRest) {
   cases::Scene s = cutScene(-1.0, 1.0, -1.0, 1.0, 0.05);
   s.materials.push_back(material("aluminium", eos::aluminiumStudy()));

@@ -15,15 +15,6 @@ namespace hvi::tvd {
 namespace {
 using namespace hvi::tvd::testing;
 
-cases::Scene cutScene(double xmin, double xmax, double zmin, double zmax, double h,
-                      Geometry g = Geometry::Planar) {
-  cases::Scene s = baseScene(xmin, xmax, zmin, zmax, h, g);
-  s.effects.insert(cases::Effect::MaterialInterfaces);
-  s.effects.insert(cases::Effect::TensionCutoff);
-  s.tvd.interfaces = cases::InterfaceMode::Conservative;
-  return s;
-}
-
 // Largest relative error of every phase's state (density against rho0[p], velocity against v)
 // over every cell the phase occupies, cut cells included.
 double stateError(const TvdSolver& solver, const std::vector<double>& rho0, Vec2 v) {

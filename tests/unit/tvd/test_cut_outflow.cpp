@@ -36,10 +36,7 @@ double beyondOutflow(const TvdSolver& solver, const cases::Scene& s) {
 TEST(TvdCutOutflow, EveryPhaseClosesWithItsOutflow) {
   for (Geometry g : {Geometry::Planar, Geometry::Axisymmetric}) {
     const bool rz = g == Geometry::Axisymmetric;
-    cases::Scene s = baseScene(rz ? 0.0 : -0.8, 0.8, -0.6, 0.6, 0.04, g);
-    s.effects.insert(cases::Effect::MaterialInterfaces);
-    s.effects.insert(cases::Effect::TensionCutoff);
-    s.tvd.interfaces = cases::InterfaceMode::Conservative;
+    cases::Scene s = cutScene(rz ? 0.0 : -0.8, 0.8, -0.6, 0.6, 0.04, g);
     if (rz) s.domain.boundary[0] = cases::Boundary::Axis;  // the rest outflow (baseScene)
     s.materials.push_back(material("aluminium", eos::aluminiumStudy()));
     s.materials.push_back(material("second", eos::aluminiumStudy()));  // as TvdCutCells.Impact*
@@ -87,10 +84,7 @@ TEST(TvdCutOutflow, EveryPhaseClosesWithItsOutflow) {
 TEST(TvdCutOutflow, NoReentryCutsTheLinesAtTheSides) {
   for (Geometry g : {Geometry::Planar, Geometry::Axisymmetric}) {
     const bool rz = g == Geometry::Axisymmetric;
-    cases::Scene s = baseScene(rz ? 0.0 : -0.5, 0.5, -0.5, 0.5, 0.025, g);
-    s.effects.insert(cases::Effect::MaterialInterfaces);
-    s.effects.insert(cases::Effect::TensionCutoff);
-    s.tvd.interfaces = cases::InterfaceMode::Conservative;
+    cases::Scene s = cutScene(rz ? 0.0 : -0.5, 0.5, -0.5, 0.5, 0.025, g);
     s.tvd.outflow = cases::OutflowMode::NoReentry;
     if (rz) s.domain.boundary[0] = cases::Boundary::Axis;  // the rest outflow (baseScene)
     s.materials.push_back(material("aluminium", eos::aluminiumStudy()));
@@ -123,7 +117,9 @@ TEST(TvdCutOutflow, NoReentryCutsTheLinesAtTheSides) {
         EXPECT_LT(farthest, 0.25);
         // r-z: the block's line goes (0.3 % of its mass is still left in cells near the side).
         // Planar a sliver of 0.6 % is left along the side with its line (open, docs/tvd.md).
-        if (rz) EXPECT_EQ(blockLines, 0);
+        if (rz) {
+          EXPECT_EQ(blockLines, 0);
+        }
       } else {
         EXPECT_GT(farthest, 0.1);
         EXPECT_GT(blockLines, 0);
@@ -134,10 +130,7 @@ TEST(TvdCutOutflow, NoReentryCutsTheLinesAtTheSides) {
 
 // The per-phase outflow is part of the checkpoint: a restarted run continues it bit for bit.
 TEST(TvdCutOutflow, RestartKeepsThePhaseOutflow) {
-  cases::Scene s = baseScene(-0.6, 0.6, -0.6, 0.6, 0.05);
-  s.effects.insert(cases::Effect::MaterialInterfaces);
-  s.effects.insert(cases::Effect::TensionCutoff);
-  s.tvd.interfaces = cases::InterfaceMode::Conservative;
+  cases::Scene s = cutScene(-0.6, 0.6, -0.6, 0.6, 0.05);
   s.materials.push_back(material("aluminium", eos::aluminiumStudy()));
   s.materials.push_back(material("copper", eos::MieGruneisen{}));
   s.bodies.push_back(body("plate", 0, cases::Rect{-0.6, 0.45, -0.3, 0.013}, {2.79, {0.4, 0.0}, 0.0}));
@@ -170,10 +163,7 @@ TEST(TvdCutOutflow, RestartKeepsThePhaseOutflow) {
 TEST(TvdCutOutflow, NothingReentersThroughAnOutflowSide) {
   for (Geometry g : {Geometry::Planar, Geometry::Axisymmetric}) {
     const bool rz = g == Geometry::Axisymmetric;
-    cases::Scene s = baseScene(rz ? 0.0 : -0.5, 0.5, -0.5, 0.5, 0.025, g);
-    s.effects.insert(cases::Effect::MaterialInterfaces);
-    s.effects.insert(cases::Effect::TensionCutoff);
-    s.tvd.interfaces = cases::InterfaceMode::Conservative;
+    cases::Scene s = cutScene(rz ? 0.0 : -0.5, 0.5, -0.5, 0.5, 0.025, g);
     if (rz) s.domain.boundary[0] = cases::Boundary::Axis;  // the rest outflow (baseScene)
     s.materials.push_back(material("aluminium", eos::aluminiumStudy()));
     if (rz)
@@ -226,10 +216,7 @@ TEST(TvdCutOutflow, NothingReentersThroughAnOutflowSide) {
 TEST(TvdColdStates, ImpactConservesEnergyWithoutFloors) {
   for (Geometry g : {Geometry::Planar, Geometry::Axisymmetric}) {
     const bool rz = g == Geometry::Axisymmetric;
-    cases::Scene s = baseScene(rz ? 0.0 : -1.2, 1.2, -1.0, 1.0, 0.04, g);
-    s.effects.insert(cases::Effect::MaterialInterfaces);
-    s.effects.insert(cases::Effect::TensionCutoff);
-    s.tvd.interfaces = cases::InterfaceMode::Conservative;
+    cases::Scene s = cutScene(rz ? 0.0 : -1.2, 1.2, -1.0, 1.0, 0.04, g);
     for (auto& b : s.domain.boundary) b = cases::Boundary::Wall;
     if (rz) s.domain.boundary[0] = cases::Boundary::Axis;
     s.materials.push_back(material("aluminium", eos::aluminiumStudy()));

@@ -54,6 +54,16 @@ inline cases::Scene baseScene(double xmin, double xmax, double zmin, double zmax
   return s;
 }
 
+//! baseScene with the conservative cut-cell interfaces (marker lines, tension cut-off).
+inline cases::Scene cutScene(double xmin, double xmax, double zmin, double zmax, double h,
+                             Geometry g = Geometry::Planar) {
+  cases::Scene s = baseScene(xmin, xmax, zmin, zmax, h, g);
+  s.effects.insert(cases::Effect::MaterialInterfaces);
+  s.effects.insert(cases::Effect::TensionCutoff);
+  s.tvd.interfaces = cases::InterfaceMode::Conservative;
+  return s;
+}
+
 //! Runs the solver to time t (exactly).
 inline void runTo(Solver& s, double t) {
   while (s.time() < t) s.advance(t);
