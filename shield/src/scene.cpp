@@ -184,9 +184,13 @@ std::string sceneToml(const ShieldSpec& s) {
         "\"square\"\nalpha = 1.0\nbeta = 2.0\ncfl = 0.3\n\n",
         cm(h));
   else
+    // Outflow as the production Eulerian codes treat it: what leaves is gone. With the zero-
+    // gradient ghost ("open") the debris leaving the plates' rim and the ejecta leaving the
+    // top came back in, and the lines beyond the sides stretched until the Whipple run at
+    // 0.0423 cm stopped (docs/shield.md, "TVD outflow").
     out += fmt::format(
         "[tvd]\ncell_size = {}\nlimiter = \"minmod\"\ncfl = 0.4\nmarker_spacing = "
-        "0.5\n\n",
+        "0.5\noutflow = \"no_reentry\"\n\n",
         cm(h));
   out += "[output]\ntimes = [";
   for (int k = 1; k <= s.snapshots; ++k)

@@ -5,6 +5,7 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <variant>
 
 #include "cut_line.hpp"
@@ -23,6 +24,9 @@ namespace hvi::tvd::detail {
 //! through that face after every stage (Hu et al. 2006, section 2.5: 0.5): its own volume would
 //! otherwise limit the time step.
 inline constexpr double kMergeFraction = 0.5;
+//! An r-z face the phase does not pair across has no face pressure (the hoop source takes the
+//! cell's own); face pressures may be negative (tension), so the mark is not a number.
+inline constexpr double kNoFacePressure = std::numeric_limits<double>::quiet_NaN();
 //! Below this part of its fraction a phase cell is fading out of the cell within the step (a
 //! trailing edge leaving it): its stage states are intermediates, not checked as physical.
 inline constexpr double kLiveFraction = 0.1;
@@ -152,8 +156,8 @@ class CutLineSolver {
       if constexpr (Radial)
         for (int f = 1; f <= n_ + 1; ++f)
           ph.pface[f] = ph.ap[f] > 0.0 && ph.cs[f].rho > 0.0 && ph.cs[f + 1].rho > 0.0
-                            ? contactStar(ph.cs[f], ph.cs[f + 1], 1.0, 0.0, C_.contactIterations).p
-                            : -1.0;  // no pair across: the cell's own pressure (update)
+                            ? facePressure(ph.cs[f], ph.cs[f + 1], C_.contactIterations)
+                            : kNoFacePressure;  // no pair across: the cell's own pressure
       wallFaces(ph);
       noReentry(ph, true);
       for (int k = 0; k < 4; ++k) std::fill(ph.ex[k].begin(), ph.ex[k].begin() + nb, 0.0);
@@ -411,8 +415,8 @@ class CutLineSolver {
     if constexpr (Radial) {
       // Hoop source over the phase's part of the cell; a face the phase does not pair across
       // contributes the cell's own pressure (what its interface area in the closure assumes).
-      const double pl = ph.ap[j - 1] > 0.0 && ph.pface[j - 1] >= 0.0 ? ph.pface[j - 1] : ph.cs[j].p;
-      const double pr = ph.ap[j] > 0.0 && ph.pface[j] >= 0.0 ? ph.pface[j] : ph.cs[j].p;
+      const double pl = ph.ap[j - 1] > 0.0 && !std::isnan(ph.pface[j - 1]) ? ph.pface[j - 1] : ph.cs[j].p;
+      const double pr = ph.ap[j] > 0.0 && !std::isnan(ph.pface[j]) ? ph.pface[j] : ph.cs[j].p;
       ph.w[kMn][j] += C_.dt * 0.5 * (pl + pr) * S[j] * W_.invR[j];
     }
   }

@@ -1,6 +1,7 @@
 //! @file Kernel tests: eigen-structure for a general EOS, decomposition, limiters, fluxes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
@@ -253,6 +254,25 @@ TEST(TvdKernels, ContactSeparates) {
   EXPECT_EQ(s.p, 0.0);
   EXPECT_DOUBLE_EQ(s.uL, -0.5);
   EXPECT_DOUBLE_EQ(s.uR, 0.5);
+}
+
+// The face pressure inside one material (the r-z hoop source's): contactStar's p* where neither
+// cell is in tension, bit for bit (the tension cut-off and gases are unchanged by it); the
+// tension itself where the cells carry it (copper at 0.99 rho0: P = -0.0141 Mbar), so that a
+// uniform state in tension has the hoop source its flux difference needs; never below the
+// cells' own tension (two cells in tension moving apart).
+TEST(TvdKernels, FacePressureCarriesTheCellsTension) {
+  const eos::MieGruneisen cu{};
+  const CellState A = stateOf(cu, 9.0, 0.01, 0.0, 1e-4), B = stateOf(cu, 9.1, -0.02, 0.0, 2e-4);
+  ASSERT_GT(A.p, 0.0);
+  EXPECT_EQ(facePressure(A, B, 2), contactStar(A, B, 1.0, 0.0, 2).p);
+  const CellState T = stateOf(cu, 0.99 * 8.93, 0.0, 0.0, 0.0);
+  ASSERT_LT(T.p, -0.01);
+  EXPECT_EQ(contactStar(T, T, 1.0, 0.0, 2).p, 0.0);  // an interface separates ...
+  EXPECT_DOUBLE_EQ(facePressure(T, T, 2), T.p);      // ... a body in tension does not
+  const CellState L = stateOf(cu, 0.99 * 8.93, -0.01, 0.0, 0.0);
+  const CellState R = stateOf(cu, 0.995 * 8.93, 0.01, 0.0, 0.0);
+  EXPECT_DOUBLE_EQ(facePressure(L, R, 2), std::min(L.p, R.p));
 }
 
 // With the star state equal to the cell state the two-sided flux is the physical flux, and

@@ -69,6 +69,32 @@ inline ContactStar contactStar(const CellState& L, const CellState& R, double nn
   return s;
 }
 
+//! Pressure on a face inside one material, for the r-z hoop source P/r: the two-shock p* of
+//! contactStar, which may be tension where the cells themselves carry it. contactStar's
+//! separation (p* >= 0) is right at an interface or a wall, which cannot pull; inside a body
+//! that carries tension (strength, a spall strength) the clamp left the hoop source at 0 while
+//! the flux difference carried the tension, a net outward force on the cells next to the axis
+//! that expanded them without bound (the Taylor rod's axis, docs/tvd.md "Tension at the
+//! axis"). Bounded below by the cells' own tension, and equal to contactStar's p* where neither
+//! cell is in tension (the tension cut-off, gases: bit for bit as before).
+inline double facePressure(const CellState& L, const CellState& R, int iterations) {
+  const ContactStar s = contactStar(L, R, 1.0, 0.0, iterations);
+  const double floor = std::min({0.0, L.p, R.p});
+  if (!(floor < 0.0)) return s.p;
+  const double uL = L.u, uR = R.u;
+  double zL = impedance(L), zR = impedance(R);
+  double p = 0.0, u = 0.0;
+  for (int it = 0;; ++it) {
+    const double inv = 1.0 / (zL + zR);
+    p = ((zR * L.p + zL * R.p) + zL * zR * (uL - uR)) * inv;
+    u = ((zL * uL + zR * uR) + (L.p - R.p)) * inv;
+    if (it == iterations) break;
+    zL = L.rho * ((L.c + 1e-30) + shockSlope(L) * std::max(uL - u, 0.0));
+    zR = R.rho * ((R.c + 1e-30) + shockSlope(R) * std::max(u - uR, 0.0));
+  }
+  return std::max(p, floor);
+}
+
 //! Euler flux of side K's state with its velocity component along n set to uStar and the
 //! pressure set to pStar.
 inline void starFlux(const CellState& K, double pStar, double uStar, double nn, double nt,
