@@ -3,6 +3,7 @@
 #include "detail/strength_pass.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <type_traits>
 #include <variant>
 
@@ -298,6 +299,10 @@ void StrengthModel::resize(std::size_t n) {
   forEachState(*this, [n](auto& v) { v.resize(n, 0.0); });
   for (auto* v : {&cL, &g_, &sxx0_, &szz0_, &sxz0_, &dsxx_, &dszz_, &dsxz_, &rate_})
     v->resize(n, 0.0);
+  // The kept terms are recomputed after any change of the particle set.
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  etaTerms_.assign(n, EtaTerms{nan, 0.0, 0.0, 0.0});
+  hardTerms_.assign(n, HardTerms{nan, 0.0});
   if (switch_) {
     alpha.resize(n, visc_.alpha);
     divv_.resize(n, 0.0);
@@ -318,6 +323,19 @@ void StrengthModel::compact(const std::vector<unsigned char>& keep, std::size_t 
       if (keep[i]) (*v)[k++] = (*v)[i];
   }
   resize(n);
+}
+
+const StrengthModel::EtaTerms& StrengthModel::etaTerms(std::size_t i, std::size_t k, double eta) {
+  EtaTerms& t = etaTerms_[i];
+  if (!(t.eta == eta)) {
+    const strength::Material& sm = *solids_[k];
+    t.eta = eta;
+    t.cold = sm.thermal.coldEnergy(eta);
+    const auto* sg = std::get_if<strength::SteinbergGuinan>(&sm.yield);
+    t.cbrt = sg ? std::cbrt(eta) : 0.0;
+    t.melt = sg ? sg->meltTemperature(eta) : 0.0;
+  }
+  return t;
 }
 
 void StrengthModel::beginStep(std::size_t n) {
@@ -364,12 +382,20 @@ void StrengthModel::advance(double dt, std::size_t n, const PairArrays& a, const
                                  sxz0_[i] + dt * dsxz_[i]};
             const double eta = a.rho[i] / rho0;
             const double rate = plasticRateOn_ ? plasticRate[i] : rate_[i];
+            const EtaTerms& et = etaTerms(i, k, eta);
             const strength::YieldInput in{epsP[i], rate, a.p[i],
-                                          sm.thermal.temperature(eta, e[i]), eta};
+                                          sm.thermal.temperatureAbove(et.cold, e[i]), eta};
+            double y;
+            if constexpr (std::is_same_v<std::decay_t<decltype(law)>, strength::SteinbergGuinan>) {
+              HardTerms& ht = hardTerms_[i];
+              if (!(ht.epsP == epsP[i])) ht = {epsP[i], law.hardening(epsP[i])};
+              y = law.yieldFrom(in, et.melt, ht.hard, et.cbrt);
+            } else {
+              y = law.yield(in);
+            }
             // Damaged material keeps (1 - D) of its shear strength (docs/strength.md).
             const double d = damage[i];
-            const strength::ReturnResult rr =
-                strength::radialReturn(s, (1.0 - d) * law.yield(in), g_[i]);
+            const strength::ReturnResult rr = strength::radialReturn(s, (1.0 - d) * y, g_[i]);
             sxx[i] = s.xx;
             szz[i] = s.zz;
             sxz[i] = s.xz;
@@ -422,7 +448,10 @@ void StrengthModel::refreshPoints(const PairArrays& a, std::size_t n, const doub
     }
     const strength::Material& sm = *solids_[k];
     const double eta = rho / rho0_[k];
-    const double g = strength::shearModulus(sm, a.p[i], sm.thermal.temperature(eta, e[i]), eta);
+    const EtaTerms& et = etaTerms(i, k, eta);
+    const double temp = sm.thermal.temperatureAbove(et.cold, e[i]);
+    const auto* sg = std::get_if<strength::SteinbergGuinan>(&sm.yield);
+    const double g = sg ? sg->shearModulusAt(a.p[i], temp, et.cbrt) : sm.shearModulus;
     g_[i] = g;
     cL[i] = strength::longitudinalSoundSpeed(a.c[i], g, rho);
     // The radius weight rw (1 in planar geometry) as in the pressure's q = rw P / rho^2.

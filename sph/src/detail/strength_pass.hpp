@@ -115,6 +115,20 @@ class StrengthModel {
   int power_;
   bool fracture_;
   std::vector<double> g_;  // shear modulus of the reals at the last refresh, Mbar
+  // The terms of one eta and one eps_p per real particle, kept between the calls that share
+  // them (docs/strength.md, "Cost of strength in SPH"): the half state's advance, refresh and
+  // the step's end read one eta and (before the end counts it) one eps_p. Recomputed where the
+  // key differs, so a value read is the one the call would compute (the same bits); NaN keys
+  // (resize, compact) recompute.
+  struct EtaTerms {
+    double eta, cold, cbrt, melt;  // key, cold energy, cbrt(eta), SG's T_m(eta)
+  };
+  struct HardTerms {
+    double epsP, hard;  // key, SG's hardening
+  };
+  std::vector<EtaTerms> etaTerms_;
+  std::vector<HardTerms> hardTerms_;
+  const EtaTerms& etaTerms(std::size_t i, std::size_t k, double eta);
   std::vector<double> sxx0_, szz0_, sxz0_, dsxx_, dszz_, dsxz_, rate_;
   StressPoints pts_;
   bool switch_ = false;
