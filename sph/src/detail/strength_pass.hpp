@@ -84,6 +84,21 @@ class StrengthModel {
   void pass(const PairArrays& a, std::size_t n, const NeighbourList& list, bool cached,
             const AxisCorrection* axis, const Rates& out);
 
+  //! Whether passWithForces runs here: the Gaussian kernel in lanes of 4 or more (the stress
+  //! lane kernels).
+  [[nodiscard]] bool fusable() const;
+  //! The force pass over full rows (the lane kernel of selectForcePass(Gaussian, rz, viscous,
+  //! compatible, cached): ax, az, de and its drho, phi, pair data and hoop acceleration written)
+  //! and then this pass's terms added, in one sweep over the rows: per row the force kernel,
+  //! whose pair geometry (dx, dv, h_j, W, grad W) the stress kernel reads instead of computing
+  //! it again. The same bits as the force pass over all rows followed by pass() (rows are
+  //! independent in both). Not with the r-z symmetric form or the axis matrix (the ring form's
+  //! `axis` only). With the viscosity switch `viscous` is false (the switched viscosity is
+  //! this pass's).
+  void passWithForces(const PairArrays& a, std::size_t n, const NeighbourList& list, bool cached,
+                      const AxisCorrection* axis, bool viscous, bool compatible,
+                      const MonaghanViscosity& visc, const Rates& out);
+
   //! Morris and Monaghan's (1997) viscosity switch (docs/strength.md, "Viscosity switch"): the
   //! pass then adds the Monaghan viscosity with the pair's alpha_ij = (alpha_i + alpha_j) / 2
   //! and beta_ij = beta alpha_ij / alpha (the force passes must run inviscid), and the step's
