@@ -115,23 +115,25 @@ RowSums scalarRow(const PairArrays& a, std::size_t i, const int* nb, const doubl
 // The same sums from the lane kernel's per-pair terms (stress_lanes.hpp), added in list order
 // as scalarRow adds them: the same bits (a pair with W = 0 adds zeros).
 template <bool RZ, bool Pairs, bool Switch>
+inline void addStressTerms(RowSums& r, const StressRowTerms& t, int k, double* pwx, double* pwz) {
+  r.gxx += t.gxx[k];
+  r.gxz += t.gxz[k];
+  r.gzx += t.gzx[k];
+  r.gzz += t.gzz[k];
+  if constexpr (Switch) r.phiMin = std::min(r.phiMin, t.phi[k]);
+  if constexpr (RZ) r.hoop += t.hoop[k];
+  r.ax += t.ax[k];
+  r.az += t.az[k];
+  r.de += t.de[k];
+  if constexpr (Pairs) {
+    pwx[k] += 0.5 * t.ax[k];
+    pwz[k] += 0.5 * t.az[k];
+  }
+}
+template <bool RZ, bool Pairs, bool Switch>
 RowSums laneRow(const StressRowTerms& t, int cnt, double* pwx, double* pwz) {
   RowSums r;
-  for (int k = 0; k < cnt; ++k) {
-    r.gxx += t.gxx[k];
-    r.gxz += t.gxz[k];
-    r.gzx += t.gzx[k];
-    r.gzz += t.gzz[k];
-    if constexpr (Switch) r.phiMin = std::min(r.phiMin, t.phi[k]);
-    if constexpr (RZ) r.hoop += t.hoop[k];
-    r.ax += t.ax[k];
-    r.az += t.az[k];
-    r.de += t.de[k];
-    if constexpr (Pairs) {
-      pwx[k] += 0.5 * t.ax[k];
-      pwz[k] += 0.5 * t.az[k];
-    }
-  }
+  for (int k = 0; k < cnt; ++k) addStressTerms<RZ, Pairs, Switch>(r, t, k, pwx, pwz);
   return r;
 }
 
@@ -149,11 +151,11 @@ struct ForceArgs {
 // included, times the axis correction), with a_r += H_i / r_i^2 and de += lam_i H_i / r_i (they
 // cancel particle by particle in the energy, as for the pressure).
 // `lanes`: the Gaussian lane kernel (null: the scalar loop).
-// F != None (lanes only): each row first runs the force pass's lane kernel and writes the force
-// rates as the force pass does (laneRowRates, the same code), then the stress kernel reads the
-// pair geometry that kernel stored (one W and one gradient per pair instead of two). Rows are
-// independent in both passes, so row by row gives the bits of the force pass over all rows
-// followed by this one.
+// F != None (lanes only): each row first runs the force pass's lane kernel, then the stress
+// kernel reads the pair geometry that kernel stored (one W and one gradient per pair instead of
+// two); the force rates are written as the force pass writes them (forceRowRates, the same
+// code and sums), then the stress terms added. Rows are independent in both passes, so row by
+// row gives the bits of the force pass over all rows followed by this one.
 template <class K, bool RZ, bool Cached, bool Pairs, bool Switch, Force F = Force::None>
 void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
                  const StressPoints& p, const double* sxx, const double* szz, const double* sxz,
@@ -205,10 +207,16 @@ void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& li
         ft.pwx = pwx;
         ft.pwz = pwz;
         force.kernel(fa, i, nb, wc, cnt, force.visc.alpha, force.visc.beta, ft);
-        laneRowRates<RZ, F == Force::Viscous, Cached, Pairs>(a, i, cnt, ft, false, axis, nullptr,
-                                                             out);
         lanes(la, i, nb, wc, cnt, prm, terms, &geom);
-        sums = laneRow<RZ, Pairs, Switch>(terms, cnt, pwx, pwz);
+        // Both passes' sums in one loop: more independent chains per slot (each sum still in
+        // list order). The force rates first, as the force pass writes them.
+        constexpr bool kViscous = F == Force::Viscous;
+        ForceRowSums fs;
+        for (int k = 0; k < cnt; ++k) {
+          addForceTerms<RZ, kViscous, Cached>(fs, ft, k);
+          addStressTerms<RZ, Pairs, Switch>(sums, terms, k, pwx, pwz);
+        }
+        forceRowRates<RZ, kViscous, Cached, Pairs>(a, i, fs, axis, nullptr, out);
       } else if (lanes) {
         lanes(la, i, nb, wc, cnt, prm, terms, nullptr);
         sums = laneRow<RZ, Pairs, Switch>(terms, cnt, pwx, pwz);

@@ -34,23 +34,27 @@ inline double symmetricRz(const PairArrays& a, std::size_t i, const RingScale* r
   return hoopAx;
 }
 
-// Row i's rates from its terms t (cnt slots), added up in list order as forcePass adds them.
+// A row's force sums, added term by term in list order as forcePass adds them.
+struct ForceRowSums {
+  double ax = 0.0, az = 0.0, de = 0.0, drho = 0.0, hoop = 0.0, hoopPi = 0.0, phi = 0.0;
+};
+template <bool RZ, bool Viscous, bool Cached>
+inline void addForceTerms(ForceRowSums& s, const RowTerms& t, int k) {
+  s.ax += t.ax[k];
+  s.az += t.az[k];
+  s.de += t.de[k];
+  if constexpr (Cached) s.drho += t.drho[k];
+  if constexpr (RZ) s.hoop += t.hoop[k];
+  if constexpr (Viscous && Cached) s.phi = std::min(s.phi, t.phi[k]);
+}
+
+// Row i's rates from its sums (forcePass's).
 template <bool RZ, bool Viscous, bool Cached, bool Compatible>
-inline void laneRowRates(const PairArrays& a, std::size_t i, int cnt, const RowTerms& t,
-                         bool viscHoop, const AxisCorrection* axis, const RingScale* ring,
-                         const Rates& out) {
+inline void forceRowRates(const PairArrays& a, std::size_t i, const ForceRowSums& s,
+                          const AxisCorrection* axis, const RingScale* ring, const Rates& out) {
   constexpr bool kPairs = Compatible && !Cached;
-  double sax = 0.0, saz = 0.0, sde = 0.0, sdrho = 0.0, shoop = 0.0, shoopPi = 0.0, phi = 0.0;
-  if (viscHoop)
-    for (int k = 0; k < cnt; ++k) shoopPi += t.hoopPi[k];
-  for (int k = 0; k < cnt; ++k) {
-    sax += t.ax[k];
-    saz += t.az[k];
-    sde += t.de[k];
-    if constexpr (Cached) sdrho += t.drho[k];
-    if constexpr (RZ) shoop += t.hoop[k];
-    if constexpr (Viscous && Cached) phi = std::min(phi, t.phi[k]);
-  }
+  const double sax = s.ax, saz = s.az, sde = s.de, sdrho = s.drho, shoop = s.hoop;
+  const double shoopPi = s.hoopPi, phi = s.phi;
   if constexpr (RZ) {
     if (ring) {
       const double hoopAx = symmetricRz(a, i, ring, GaussianKernel::value(0.0, a.h[i]), sax, saz,
@@ -80,6 +84,19 @@ inline void laneRowRates(const PairArrays& a, std::size_t i, int cnt, const RowT
     if constexpr (Cached) out.drho[i] = sdrho;
   }
   if constexpr (Cached) out.phi[i] = phi;
+}
+
+
+// Row i's rates from its terms t (cnt slots), added up in list order as forcePass adds them.
+template <bool RZ, bool Viscous, bool Cached, bool Compatible>
+inline void laneRowRates(const PairArrays& a, std::size_t i, int cnt, const RowTerms& t,
+                         bool viscHoop, const AxisCorrection* axis, const RingScale* ring,
+                         const Rates& out) {
+  ForceRowSums s;
+  if (viscHoop)
+    for (int k = 0; k < cnt; ++k) s.hoopPi += t.hoopPi[k];
+  for (int k = 0; k < cnt; ++k) addForceTerms<RZ, Viscous, Cached>(s, t, k);
+  forceRowRates<RZ, Viscous, Cached, Compatible>(a, i, s, axis, ring, out);
 }
 
 }  // namespace hvi::sph::detail
