@@ -370,7 +370,7 @@ void StrengthModel::resize(std::size_t n) {
     v->resize(n, 0.0);
   // The kept terms are recomputed after any change of the particle set.
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-  etaTerms_.assign(n, EtaTerms{nan, 0.0, 0.0, 0.0});
+  etaTerms_.assign(n, EtaTerms{nan, 0.0, 0.0, nan, 0.0});
   hardTerms_.assign(n, HardTerms{nan, 0.0});
   if (switch_) {
     alpha.resize(n, visc_.alpha);
@@ -394,7 +394,7 @@ void StrengthModel::compact(const std::vector<unsigned char>& keep, std::size_t 
   resize(n);
 }
 
-const StrengthModel::EtaTerms& StrengthModel::etaTerms(std::size_t i, std::size_t k, double eta) {
+StrengthModel::EtaTerms& StrengthModel::etaTerms(std::size_t i, std::size_t k, double eta) {
   EtaTerms& t = etaTerms_[i];
   if (!(t.eta == eta)) {
     const strength::Material& sm = *solids_[k];
@@ -402,7 +402,6 @@ const StrengthModel::EtaTerms& StrengthModel::etaTerms(std::size_t i, std::size_
     t.cold = sm.thermal.coldEnergy(eta);
     const auto* sg = std::get_if<strength::SteinbergGuinan>(&sm.yield);
     t.cbrt = sg ? std::cbrt(eta) : 0.0;
-    t.melt = sg ? sg->meltTemperature(eta) : 0.0;
   }
   return t;
 }
@@ -451,13 +450,17 @@ void StrengthModel::advance(double dt, std::size_t n, const PairArrays& a, const
                                  sxz0_[i] + dt * dsxz_[i]};
             const double eta = a.rho[i] / rho0;
             const double rate = plasticRateOn_ ? plasticRate[i] : rate_[i];
-            const EtaTerms& et = etaTerms(i, k, eta);
+            EtaTerms& et = etaTerms(i, k, eta);
             const strength::YieldInput in{epsP[i], rate, a.p[i],
                                           sm.thermal.temperatureAbove(et.cold, e[i]), eta};
             double y;
             if constexpr (std::is_same_v<std::decay_t<decltype(law)>, strength::SteinbergGuinan>) {
               HardTerms& ht = hardTerms_[i];
               if (!(ht.epsP == epsP[i])) ht = {epsP[i], law.hardening(epsP[i])};
+              if (!(et.meltEta == eta)) {
+                et.meltEta = eta;
+                et.melt = law.meltTemperature(eta);
+              }
               y = law.yieldFrom(in, et.melt, ht.hard, et.cbrt);
             } else {
               y = law.yield(in);

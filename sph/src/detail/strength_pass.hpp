@@ -136,14 +136,15 @@ class StrengthModel {
   // key differs, so a value read is the one the call would compute (the same bits); NaN keys
   // (resize, compact) recompute.
   struct EtaTerms {
-    double eta, cold, cbrt, melt;  // key, cold energy, cbrt(eta), SG's T_m(eta)
+    double eta, cold, cbrt;  // key, cold energy, cbrt(eta) (SG)
+    double meltEta, melt;    // SG's T_m(eta), computed where a yield reads it (its own key)
   };
   struct HardTerms {
     double epsP, hard;  // key, SG's hardening
   };
   std::vector<EtaTerms> etaTerms_;
   std::vector<HardTerms> hardTerms_;
-  const EtaTerms& etaTerms(std::size_t i, std::size_t k, double eta);
+  EtaTerms& etaTerms(std::size_t i, std::size_t k, double eta);
   std::vector<double> sxx0_, szz0_, sxz0_, dsxx_, dszz_, dsxz_, rate_;
   StressPoints pts_;
   bool switch_ = false;
