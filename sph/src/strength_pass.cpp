@@ -207,6 +207,9 @@ void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& li
         ft.pwx = pwx;
         ft.pwz = pwz;
         force.kernel(fa, i, nb, wc, cnt, force.visc.alpha, force.visc.beta, ft);
+        // The kernel adds the stress terms' pair data (in lanes, not in the loop below).
+        terms.pwx = pwx;
+        terms.pwz = pwz;
         lanes(la, i, nb, wc, cnt, prm, terms, &geom);
         // Both passes' sums in one loop: more independent chains per slot (each sum still in
         // list order). The force rates first, as the force pass writes them.
@@ -214,7 +217,7 @@ void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& li
         ForceRowSums fs;
         for (int k = 0; k < cnt; ++k) {
           addForceTerms<RZ, kViscous, Cached>(fs, ft, k);
-          addStressTerms<RZ, Pairs, Switch>(sums, terms, k, pwx, pwz);
+          addStressTerms<RZ, false, Switch>(sums, terms, k, nullptr, nullptr);
         }
         forceRowRates<RZ, kViscous, Cached, Pairs>(a, i, fs, axis, nullptr, out);
       } else if (lanes) {

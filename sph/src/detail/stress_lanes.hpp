@@ -33,6 +33,10 @@ struct StressRowTerms {
   //! If not null, 3 doubles the kernel keeps W(dp) of the last row's h_i in (h_i, q2dp, W(dp);
   //! start with a NaN h_i), for the next row of the same h_i (the same value).
   double* wdpMemo = nullptr;
+  //! If not null (the fused half-state pass with compatible energy): the row's pair data, to
+  //! which the kernel adds 0.5 ax, 0.5 az of each of the cnt slots (the stress power's even
+  //! share, as the pass would add them).
+  double *pwx = nullptr, *pwz = nullptr;
 };
 
 struct StressRowParams {

@@ -203,9 +203,23 @@ void row(const StressLaneArrays& a, std::size_t i, const int* nb, const double* 
     }
     // stressPairTerm(t, mu_j, dvx, dvz, gx, gz)
     const D fx = txx * gx + txz * gz, fz = txz * gx + tzz * gz;
-    store(out.ax + k, select(live, muj * fx, zero));
-    store(out.az + k, select(live, muj * fz, zero));
+    const D sax = select(live, muj * fx, zero), saz = select(live, muj * fz, zero);
+    store(out.ax + k, sax);
+    store(out.az + k, saz);
     store(out.de + k, select(live, -0.5 * muj * (dvx * fx + dvz * fz), zero));
+    if (out.pwx) {
+      // The compatible energy's pair data: the stress power's even share, 1/2 (the pass's
+      // pwx[k] += 0.5 ax[k], lane by lane; the row has cnt slots, none past it written).
+      if (k + L <= cnt) {
+        store(out.pwx + k, load(out.pwx + k) + 0.5 * sax);
+        store(out.pwz + k, load(out.pwz + k) + 0.5 * saz);
+      } else {
+        for (int l = 0; k + l < cnt; ++l) {
+          out.pwx[k + l] += 0.5 * sax[l];
+          out.pwz[k + l] += 0.5 * saz[l];
+        }
+      }
+    }
     if constexpr (RZ) store(out.hoop + k, select(live, muj * gather(a.htt, idx) * w, zero));
   }
 }

@@ -155,6 +155,7 @@ void checkKernel(StressRowKernel (*make)(bool, bool, bool), bool fused = false,
   detail::RowTerms ft{f,           f + 208,     f + 2 * 208, f + 3 * 208,
                       f + 4 * 208, f + 5 * 208, f + 6 * 208, f + 7 * 208};
   ft.geom = &geom;
+  std::vector<double> pw0(n + 1), pwx(n + 1), pwz(n + 1);
   long pairs = 0, live = 0;
   for (bool rz : {false, true})
     for (bool sw : {false, true}) {
@@ -175,7 +176,16 @@ void checkKernel(StressRowKernel (*make)(bool, bool, bool), bool fused = false,
               ASSERT_NE(fk, nullptr);
               std::fill(fbuf.begin(), fbuf.end(), std::nan(""));
               fk(p.forceLanes(), i, row.data(), nullptr, cnt, 1.0, 2.0, ft);
+              // The pair data the kernel adds to (slot cnt, past the row, left alone).
+              for (int t = 0; t <= cnt; ++t) pw0[t] = 1e-3 * (t + 1);
+              pwx = pw0;
+              pwz = pw0;
+              out.pwx = pwx.data();
+              out.pwz = pwz.data();
               k(p.lanes(), i, row.data(), nullptr, cnt, prm, out, &geom);
+              out.pwx = out.pwz = nullptr;
+              EXPECT_EQ(pwx[cnt], pw0[cnt]);
+              EXPECT_EQ(pwz[cnt], pw0[cnt]);
             } else {
               k(p.lanes(), i, row.data(), nullptr, cnt, prm, out, nullptr);
             }
@@ -193,6 +203,9 @@ void checkKernel(StressRowKernel (*make)(bool, bool, bool), bool fused = false,
               }
               if (sw) {
                 ASSERT_TRUE(same(out.phi[s], r.phi));
+              }
+              if (fused) {
+                ASSERT_TRUE(same(pwx[s], pw0[s] + 0.5 * r.ax) && same(pwz[s], pw0[s] + 0.5 * r.az));
               }
             }
           }
