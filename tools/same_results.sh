@@ -26,6 +26,11 @@ scenes=(
   "hard/oblique_45.toml|time.end=0.5 us;output.times=[\"0.5 us\"]"
   "hard/dense_striker.toml|time.end=0.3 us;output.times=[\"0.3 us\"]"
   "study/noh_cylindrical_rz.toml|"
+  # effects strength and fracture (planar Steinberg-Guinan, r-z Johnson-Cook, both alloys)
+  "spall_plate_sph.toml|time.end=1 us;output.times=[\"0.5 us\",\"1 us\"]"
+  "taylor_copper_sph.toml|time.end=3 us;output.times=[\"1 us\",\"3 us\"]"
+  "variant1_alloys_sph_coarse.toml|time.end=1 us;output.times=[\"0.5 us\",\"1 us\"]"
+  "variant1_alloys_tvd_coarse.toml|time.end=0.5 us;output.times=[\"0.5 us\"]"
 )
 mkdir -p "$work/old" "$work/new"
 status=0

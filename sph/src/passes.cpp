@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "detail/force_lanes.hpp"
+#include "detail/force_rows.hpp"
 #include "detail/list_build.hpp"
 #include "hvi/sph/kernel.hpp"
 #include "hvi/sph/pair_force.hpp"
@@ -40,26 +41,6 @@ inline void remainderRow(const int* nb, int cnt, const double* wx, const double*
   double corr = s / rw[i];
   if (hoopAx) corr += hoopAx[i] * dxi;
   de[i] -= halfDt * corr;
-}
-
-// The symmetric r-z form's rates of particle i from its pair sums (docs/sph-rz.md, "Symmetric
-// ring weights"): the pair sums divided by s_i; the hoop force, the radial derivative of the
-// weights s_i (in nu_i and in rho_i = sum nu_j W_ij / s_i), s'_i / s_i^2 (H_i + A_i s_i rho_i)
-// with H_i = sum_k nu_k A_k W_ik (k = i included); its work -v_r a_hoop is charged to i itself,
-// so the hoop terms conserve energy particle by particle, as in the ring form.
-inline double symmetricRz(const PairArrays& a, std::size_t i, const RingScale* ring, double wii,
-                        double sax, double saz, double sde, double shoop, double shoopPi,
-                        const Rates& out) {
-  const double si = a.rs[i], inv = 1.0 / si;
-  const double slope = ring->slope(std::abs(a.x[i]), a.h[i]);
-  const double hoop = slope * inv * inv *
-                      (shoop + a.mu[i] * a.q[i] * wii + a.q[i] * si * a.rho[i] +
-                       ring->viscousHoop * shoopPi);
-  const double hoopAx = a.x[i] >= 0.0 ? hoop : -hoop;  // a particle briefly past the axis
-  out.ax[i] = sax * inv + hoopAx;
-  out.az[i] = saz * inv;
-  out.de[i] = sde * inv - a.vx[i] * hoopAx;
-  return hoopAx;
 }
 
 // Each particle gathers over its own list: a pair is evaluated from both ends, which doubles
@@ -156,22 +137,13 @@ void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list
   }
 }
 
-// The Gaussian lane kernel for this CPU (laneWidth); all widths give the same bits
-// (force_lanes.hpp).
-RowKernel laneKernel(bool rz, bool viscous, bool cached, bool compatible) {
-  RowKernel k = nullptr;
-  if (laneWidth() >= 8) k = rowKernelAvx512(rz, viscous, cached, compatible);
-  if (!k && laneWidth() >= 4) k = rowKernelAvx2(rz, viscous, cached, compatible);
-  return k ? k : rowKernelBaseline(rz, viscous, cached, compatible);
-}
-
 // forcePass for the Gaussian kernel: the row's pair terms come from the lane kernel, then are
 // added up in list order exactly as forcePass adds them (bit for bit the same rates).
 template <bool RZ, bool Viscous, bool Cached, bool Compatible>
 void lanePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
               const MonaghanViscosity& visc, const AxisCorrection* axis, const RingScale* ring,
               const Rates& out) {
-  static const RowKernel kernel = laneKernel(RZ, Viscous, Cached, Compatible);
+  static const RowKernel kernel = rowKernel(RZ, Viscous, Cached, Compatible);
   constexpr bool kPairs = Compatible && !Cached;
   const LaneArrays la{a.x.data(),  a.z.data(), a.vx.data(), a.vz.data(), a.rho.data(),
                       a.c.data(),  a.h.data(), a.mu.data(), a.rw.data(), a.q.data(),
@@ -199,46 +171,7 @@ void lanePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
       kernel(la, i, list.index.data() + list.start[i],
              Cached && list.cacheW ? list.w.data() + list.start[i] : nullptr,
              cnt, visc.alpha, visc.beta, t);
-      double sax = 0.0, saz = 0.0, sde = 0.0, sdrho = 0.0, shoop = 0.0, shoopPi = 0.0, phi = 0.0;
-      if (viscHoop)
-        for (int k = 0; k < cnt; ++k) shoopPi += t.hoopPi[k];
-      for (int k = 0; k < cnt; ++k) {
-        sax += t.ax[k];
-        saz += t.az[k];
-        sde += t.de[k];
-        if constexpr (Cached) sdrho += t.drho[k];
-        if constexpr (RZ) shoop += t.hoop[k];
-        if constexpr (Viscous && Cached) phi = std::min(phi, t.phi[k]);
-      }
-      if constexpr (RZ) {
-        if (ring) {
-          const double hoopAx = symmetricRz(a, i, ring, GaussianKernel::value(0.0, a.h[i]), sax,
-                                            saz, sde, shoop, shoopPi, out);
-          if constexpr (kPairs) out.hoopAx[i] = hoopAx;
-          if constexpr (Cached) out.drho[i] = sdrho;
-          if constexpr (Cached) out.phi[i] = phi;
-          continue;
-        }
-        // As forcePass (docs/sph-rz.md).
-        const double hi = a.h[i], rwi = a.rw[i];
-        const double wii = GaussianKernel::value(0.0, hi);
-        const double hoop = (shoop + a.mu[i] * a.q[i] * wii) * (*axis)(rwi, hi);
-        const double inv = 1.0 / rwi;
-        const double sgn = a.x[i] >= 0.0 ? 1.0 : -1.0;
-        const double hoopAx = sgn * hoop * inv * inv;
-        out.ax[i] = sax * inv + hoopAx;
-        if constexpr (kPairs) out.hoopAx[i] = hoopAx;
-        out.az[i] = saz * inv;
-        out.de[i] = sde * inv + a.lam[i] * hoop * inv;
-        if constexpr (Cached) out.drho[i] = sdrho;
-      } else {
-        (void)axis;
-        out.ax[i] = sax;
-        out.az[i] = saz;
-        out.de[i] = sde;
-        if constexpr (Cached) out.drho[i] = sdrho;
-      }
-      if constexpr (Cached) out.phi[i] = phi;
+      laneRowRates<RZ, Viscous, Cached, Compatible>(a, i, cnt, t, viscHoop, axis, ring, out);
     }
   }
 }
@@ -538,6 +471,14 @@ int laneWidth() {
   return width;
 }
 
+// All widths give the same bits (force_lanes.hpp).
+RowKernel rowKernel(bool rz, bool viscous, bool cached, bool compatible) {
+  RowKernel k = nullptr;
+  if (laneWidth() >= 8) k = rowKernelAvx512(rz, viscous, cached, compatible);
+  if (!k && laneWidth() >= 4) k = rowKernelAvx2(rz, viscous, cached, compatible);
+  return k ? k : rowKernelBaseline(rz, viscous, cached, compatible);
+}
+
 bool halfListsAvailable(cases::Kernel kernel, bool rz) {
   return kernel == cases::Kernel::Gaussian && !rz && laneWidth() >= 4;
 }
@@ -664,7 +605,7 @@ template <bool RZ, bool Viscous>
 void laneRemainder(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
                    const MonaghanViscosity& visc, const double* dax, const double* daz,
                    const double* hoopAx, double halfDt, double* de) {
-  static const RowKernel kernel = laneKernel(RZ, Viscous, false, true);
+  static const RowKernel kernel = rowKernel(RZ, Viscous, false, true);
   const LaneArrays la{a.x.data(),  a.z.data(), a.vx.data(), a.vz.data(), a.rho.data(),
                       a.c.data(),  a.h.data(), a.mu.data(), a.rw.data(), a.q.data(),
                       a.obj.data()};

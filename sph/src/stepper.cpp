@@ -48,7 +48,7 @@ Stepper::Impl::Impl(ParticleSystem ps, std::vector<eos::Eos> mats, StepperConfig
   const bool switched = cfg.viscositySwitch && cfg.viscosity && !cfg.strength.empty();
   if (switched && !(cfg.visc.alpha > 0.0))
     throw InputError("SPH: the viscosity switch needs sph.alpha > 0 (its maximum)");
-  const bool viscous = cfg.viscosity && !switched;
+  viscous = cfg.viscosity && !switched;
   if (!(cfg.cfl > 0.0)) throw InputError(fmt::format("sph.cfl = {} must be > 0", cfg.cfl));
   // A particle moves at most (cfl/2) h_i in the half step (dt <= cfl h_i / |v_i|), so a pair
   // closes by at most cfl h_ij: a skin of cfl h_ij (plus a margin for rounding) keeps the
@@ -96,6 +96,12 @@ Stepper::Impl::Impl(ParticleSystem ps, std::vector<eos::Eos> mats, StepperConfig
     passFresh = detail::selectScalarForcePass(cfg.kernel, rz, viscous, compatible, false);
     passRemainder = detail::selectScalarRemainderPass(cfg.kernel, rz, viscous);
   }
+  // The lane force kernels over full rows, the ring form (not the symmetric form, not the
+  // axis matrix), and with compatible energy the pair data stored (the fused half-state pass
+  // writes them).
+  const char* fusedEnv = std::getenv("HVI_SPH_FUSED");
+  fused = strength && strength->fusable() && !half && !ring && !(cfg.rzAxisCorrection > 0.0) &&
+          (!compatible || storePairs) && !(fusedEnv && std::atoi(fusedEnv) == 0);
   t = cfg.time;
   resizeWork();
   corrector();
@@ -322,10 +328,15 @@ double Stepper::step(double tStop) {
                              s.phi0.data()};
   s.axisMatrix();
   // Half rows' spills in arrays dead during each pass (docs/performance.md, "SPH memory").
-  s.lendSpill({&s.x0, &s.z0, &s.vx0, &s.vz0, &s.e0});
-  s.passCached(a, s.n, s.list, s.cfg.visc, s.axis.get(), s.ring, ratesN);
-  s.lendSpill({});
-  if (s.strength) s.strength->pass(a, s.n, s.list, true, s.axis.get(), ratesN);
+  if (s.fused) {
+    s.strength->passWithForces(a, s.n, s.list, true, s.axis.get(), s.viscous, s.compatible,
+                               s.cfg.visc, ratesN);
+  } else {
+    s.lendSpill({&s.x0, &s.z0, &s.vx0, &s.vz0, &s.e0});
+    s.passCached(a, s.n, s.list, s.cfg.visc, s.axis.get(), s.ring, ratesN);
+    s.lendSpill({});
+    if (s.strength) s.strength->pass(a, s.n, s.list, true, s.axis.get(), ratesN);
+  }
   double dt = s.timeStep();
   if (s.dt0 == 0.0 && dt > 0.0 && std::isfinite(dt)) s.dt0 = dt;
   // A collapsed step (common/solver.hpp): stop and name the particle.
@@ -403,11 +414,16 @@ double Stepper::step(double tStop) {
     ratesHalf.hoopAx = s.rz ? s.hoopAx.data() : nullptr;
   }
   s.axisMatrix();
-  s.lendSpill({&s.de0, &s.drho0, &s.phi0});
-  s.passFresh(a, s.n, s.list, s.cfg.visc, s.axis.get(), s.ring, ratesHalf);
-  s.lendSpill({});
   // Before the compatible remainder: the stress accelerations are part of a^{n+1/2} - a^n.
-  if (s.strength) s.strength->pass(a, s.n, s.list, false, s.axis.get(), ratesHalf);
+  if (s.fused) {
+    s.strength->passWithForces(a, s.n, s.list, false, s.axis.get(), s.viscous, s.compatible,
+                               s.cfg.visc, ratesHalf);
+  } else {
+    s.lendSpill({&s.de0, &s.drho0, &s.phi0});
+    s.passFresh(a, s.n, s.list, s.cfg.visc, s.axis.get(), s.ring, ratesHalf);
+    s.lendSpill({});
+    if (s.strength) s.strength->pass(a, s.n, s.list, false, s.axis.get(), ratesHalf);
+  }
   if (s.compatible) s.compatibleRemainder(half);
 
     // Full step with the half-state rates (midpoint rule: second order).

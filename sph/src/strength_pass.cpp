@@ -3,10 +3,12 @@
 #include "detail/strength_pass.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <type_traits>
 #include <variant>
 
 #include "detail/force_lanes.hpp"
+#include "detail/force_rows.hpp"
 #include "detail/parallel.hpp"
 #include "detail/stress_lanes.hpp"
 #include "hvi/sph/kernel.hpp"
@@ -113,25 +115,35 @@ RowSums scalarRow(const PairArrays& a, std::size_t i, const int* nb, const doubl
 // The same sums from the lane kernel's per-pair terms (stress_lanes.hpp), added in list order
 // as scalarRow adds them: the same bits (a pair with W = 0 adds zeros).
 template <bool RZ, bool Pairs, bool Switch>
+inline void addStressTerms(RowSums& r, const StressRowTerms& t, int k, double* pwx, double* pwz) {
+  r.gxx += t.gxx[k];
+  r.gxz += t.gxz[k];
+  r.gzx += t.gzx[k];
+  r.gzz += t.gzz[k];
+  if constexpr (Switch) r.phiMin = std::min(r.phiMin, t.phi[k]);
+  if constexpr (RZ) r.hoop += t.hoop[k];
+  r.ax += t.ax[k];
+  r.az += t.az[k];
+  r.de += t.de[k];
+  if constexpr (Pairs) {
+    pwx[k] += 0.5 * t.ax[k];
+    pwz[k] += 0.5 * t.az[k];
+  }
+}
+template <bool RZ, bool Pairs, bool Switch>
 RowSums laneRow(const StressRowTerms& t, int cnt, double* pwx, double* pwz) {
   RowSums r;
-  for (int k = 0; k < cnt; ++k) {
-    r.gxx += t.gxx[k];
-    r.gxz += t.gxz[k];
-    r.gzx += t.gzx[k];
-    r.gzz += t.gzz[k];
-    if constexpr (Switch) r.phiMin = std::min(r.phiMin, t.phi[k]);
-    if constexpr (RZ) r.hoop += t.hoop[k];
-    r.ax += t.ax[k];
-    r.az += t.az[k];
-    r.de += t.de[k];
-    if constexpr (Pairs) {
-      pwx[k] += 0.5 * t.ax[k];
-      pwz[k] += 0.5 * t.az[k];
-    }
-  }
+  for (int k = 0; k < cnt; ++k) addStressTerms<RZ, Pairs, Switch>(r, t, k, pwx, pwz);
   return r;
 }
+
+// The force pass run row by row inside the strength pass (StrengthModel::passWithForces): its
+// lane kernel (full rows), the viscosity policy and parameters.
+enum class Force { None, Inviscid, Viscous };
+struct ForceArgs {
+  RowKernel kernel = nullptr;
+  MonaghanViscosity visc{};
+};
 
 // r-z (docs/strength.md, "SPH with strength"): the in-plane tensor is weighted by the radius as
 // the pressure is (T = r s / rho^2), the pair sums are divided by r_i, and the hoop stress enters
@@ -139,12 +151,18 @@ RowSums laneRow(const StressRowTerms& t, int cnt, double* pwx, double* pwz) {
 // included, times the axis correction), with a_r += H_i / r_i^2 and de += lam_i H_i / r_i (they
 // cancel particle by particle in the energy, as for the pressure).
 // `lanes`: the Gaussian lane kernel (null: the scalar loop).
-template <class K, bool RZ, bool Cached, bool Pairs, bool Switch>
+// F != None (lanes only): each row first runs the force pass's lane kernel, then the stress
+// kernel reads the pair geometry that kernel stored (one W and one gradient per pair instead of
+// two); the force rates are written as the force pass writes them (forceRowRates, the same
+// code and sums), then the stress terms added. Rows are independent in both passes, so row by
+// row gives the bits of the force pass over all rows followed by this one.
+template <class K, bool RZ, bool Cached, bool Pairs, bool Switch, Force F = Force::None>
 void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
                  const StressPoints& p, const double* sxx, const double* szz, const double* sxz,
                  const double* g, double hFactor, int power, const AxisCorrection* axis,
                  const Rates& out, const StressRates& rs, const SwitchArgs& sw,
-                 StressRowKernel lanes) {
+                 StressRowKernel lanes, const ForceArgs& force = {}) {
+  constexpr bool kFused = F != Force::None;
   const long nr = static_cast<long>(nReal);
   const double q2dp = 1.0 / (hFactor * hFactor);  // (dp / h)^2
   const StressLaneArrays la{a.x.data(),   a.z.data(),   a.vx.data(),  a.vz.data(),  a.h.data(),
@@ -152,15 +170,28 @@ void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& li
                             p.tzz.data(), p.txz.data(), p.rxx.data(), p.rzz.data(), p.rxz.data(),
                             p.htt.data(), sw.alpha,     p.vol.data(), p.rec.data()};
   const StressRowParams prm{q2dp, power, sw.betaPerAlpha};
+  const LaneArrays fa{a.x.data(), a.z.data(),  a.vx.data(), a.vz.data(), a.rho.data(), a.c.data(),
+                      a.h.data(), a.mu.data(), a.rw.data(), a.q.data(),  a.obj.data()};
   const std::size_t cap = lanes ? (list.stride + 7) / 8 * 8 : 0;  // whole blocks of 8 lanes
 #pragma omp parallel if (nr > kParallelPairs)
   {
-    // One scratch row per thread and pass (no allocation per pair).
-    std::vector<double> scratch(9 * cap);
+    // One scratch row per thread and pass (no allocation per pair): the stress terms, and
+    // fused the force terms (6 columns) and the pair geometry (7).
+    std::vector<double> scratch((kFused ? 22 : 9) * cap + 3);
     double* s0 = scratch.data();
-    const StressRowTerms terms{s0,           s0 + cap,     s0 + 2 * cap,
-                               s0 + 3 * cap, s0 + 4 * cap, s0 + 5 * cap,
-                               s0 + 6 * cap, s0 + 7 * cap, s0 + 8 * cap};
+    StressRowTerms terms{s0,           s0 + cap,     s0 + 2 * cap, s0 + 3 * cap, s0 + 4 * cap,
+                         s0 + 5 * cap, s0 + 6 * cap, s0 + 7 * cap, s0 + 8 * cap};
+    terms.wdpMemo = s0 + (kFused ? 22 : 9) * cap;
+    terms.wdpMemo[0] = std::numeric_limits<double>::quiet_NaN();
+    PairGeometry geom{};
+    RowTerms ft{};
+    if constexpr (kFused) {
+      double* f0 = s0 + 9 * cap;
+      geom = {f0 + 6 * cap,  f0 + 7 * cap,  f0 + 8 * cap, f0 + 9 * cap,
+              f0 + 10 * cap, f0 + 11 * cap, f0 + 12 * cap};
+      ft = {f0, f0 + cap, f0 + 2 * cap, f0 + 3 * cap, f0 + 4 * cap, f0 + 5 * cap, nullptr, nullptr};
+      ft.geom = &geom;
+    }
 #pragma omp for schedule(static)
     for (long il = 0; il < nr; ++il) {
       const std::size_t i = static_cast<std::size_t>(il);
@@ -172,8 +203,25 @@ void stressPairs(const PairArrays& a, std::size_t nReal, const NeighbourList& li
       double* pwx = Pairs ? out.pairWx + list.start[i] : nullptr;
       double* pwz = Pairs ? out.pairWz + list.start[i] : nullptr;
       RowSums sums;
-      if (lanes) {
-        lanes(la, i, nb, wc, cnt, prm, terms);
+      if constexpr (kFused) {
+        ft.pwx = pwx;
+        ft.pwz = pwz;
+        force.kernel(fa, i, nb, wc, cnt, force.visc.alpha, force.visc.beta, ft);
+        // The kernel adds the stress terms' pair data (in lanes, not in the loop below).
+        terms.pwx = pwx;
+        terms.pwz = pwz;
+        lanes(la, i, nb, wc, cnt, prm, terms, &geom);
+        // Both passes' sums in one loop: more independent chains per slot (each sum still in
+        // list order). The force rates first, as the force pass writes them.
+        constexpr bool kViscous = F == Force::Viscous;
+        ForceRowSums fs;
+        for (int k = 0; k < cnt; ++k) {
+          addForceTerms<RZ, kViscous, Cached>(fs, ft, k);
+          addStressTerms<RZ, false, Switch>(sums, terms, k, nullptr, nullptr);
+        }
+        forceRowRates<RZ, kViscous, Cached, Pairs>(a, i, fs, axis, nullptr, out);
+      } else if (lanes) {
+        lanes(la, i, nb, wc, cnt, prm, terms, nullptr);
         sums = laneRow<RZ, Pairs, Switch>(terms, cnt, pwx, pwz);
       } else {
         sums = scalarRow<K, RZ, Cached, Pairs, Switch>(a, i, nb, wc, cnt, p, q2dp, power, sw, pwx,
@@ -268,6 +316,31 @@ void dispatch(bool rz, bool sw, bool cached, bool pairs, const PairArrays& a, st
                               axis, out, rs, swa);
 }
 
+// The fused passes (Gaussian lanes only).
+template <bool RZ, bool Switch, Force F>
+void dispatchFused(bool cached, bool pairs, const PairArrays& a, std::size_t n,
+                   const NeighbourList& list, const StressPoints& p, const double* sxx,
+                   const double* szz, const double* sxz, const double* g, double hFactor, int power,
+                   const AxisCorrection* axis, const Rates& out, const StressRates& rs,
+                   const SwitchArgs& sw, const ForceArgs& force) {
+  static const StressRowKernel lanes = [] {
+    StressRowKernel r = nullptr;
+    if (laneWidth() >= 8) r = stressRowKernelAvx512(RZ, Switch, true);
+    if (!r && laneWidth() >= 4) r = stressRowKernelAvx2(RZ, Switch, true);
+    return r;
+  }();
+  using GK = GaussianKernel;
+  if (cached)
+    stressPairs<GK, RZ, true, false, Switch, F>(a, n, list, p, sxx, szz, sxz, g, hFactor, power,
+                                                axis, out, rs, sw, lanes, force);
+  else if (pairs)
+    stressPairs<GK, RZ, false, true, Switch, F>(a, n, list, p, sxx, szz, sxz, g, hFactor, power,
+                                                axis, out, rs, sw, lanes, force);
+  else
+    stressPairs<GK, RZ, false, false, Switch, F>(a, n, list, p, sxx, szz, sxz, g, hFactor, power,
+                                                 axis, out, rs, sw, lanes, force);
+}
+
 }  // namespace
 
 StrengthModel::StrengthModel(std::vector<std::optional<strength::Material>> solids,
@@ -298,6 +371,10 @@ void StrengthModel::resize(std::size_t n) {
   forEachState(*this, [n](auto& v) { v.resize(n, 0.0); });
   for (auto* v : {&cL, &g_, &sxx0_, &szz0_, &sxz0_, &dsxx_, &dszz_, &dsxz_, &rate_})
     v->resize(n, 0.0);
+  // The kept terms are recomputed after any change of the particle set.
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  etaTerms_.assign(n, EtaTerms{nan, 0.0, 0.0, nan, 0.0});
+  hardTerms_.assign(n, HardTerms{nan, 0.0});
   if (switch_) {
     alpha.resize(n, visc_.alpha);
     divv_.resize(n, 0.0);
@@ -318,6 +395,18 @@ void StrengthModel::compact(const std::vector<unsigned char>& keep, std::size_t 
       if (keep[i]) (*v)[k++] = (*v)[i];
   }
   resize(n);
+}
+
+StrengthModel::EtaTerms& StrengthModel::etaTerms(std::size_t i, std::size_t k, double eta) {
+  EtaTerms& t = etaTerms_[i];
+  if (!(t.eta == eta)) {
+    const strength::Material& sm = *solids_[k];
+    t.eta = eta;
+    t.cold = sm.thermal.coldEnergy(eta);
+    const auto* sg = std::get_if<strength::SteinbergGuinan>(&sm.yield);
+    t.cbrt = sg ? std::cbrt(eta) : 0.0;
+  }
+  return t;
 }
 
 void StrengthModel::beginStep(std::size_t n) {
@@ -364,12 +453,24 @@ void StrengthModel::advance(double dt, std::size_t n, const PairArrays& a, const
                                  sxz0_[i] + dt * dsxz_[i]};
             const double eta = a.rho[i] / rho0;
             const double rate = plasticRateOn_ ? plasticRate[i] : rate_[i];
+            EtaTerms& et = etaTerms(i, k, eta);
             const strength::YieldInput in{epsP[i], rate, a.p[i],
-                                          sm.thermal.temperature(eta, e[i]), eta};
+                                          sm.thermal.temperatureAbove(et.cold, e[i]), eta};
+            double y;
+            if constexpr (std::is_same_v<std::decay_t<decltype(law)>, strength::SteinbergGuinan>) {
+              HardTerms& ht = hardTerms_[i];
+              if (!(ht.epsP == epsP[i])) ht = {epsP[i], law.hardening(epsP[i])};
+              if (!(et.meltEta == eta)) {
+                et.meltEta = eta;
+                et.melt = law.meltTemperature(eta);
+              }
+              y = law.yieldFrom(in, et.melt, ht.hard, et.cbrt);
+            } else {
+              y = law.yield(in);
+            }
             // Damaged material keeps (1 - D) of its shear strength (docs/strength.md).
             const double d = damage[i];
-            const strength::ReturnResult rr =
-                strength::radialReturn(s, (1.0 - d) * law.yield(in), g_[i]);
+            const strength::ReturnResult rr = strength::radialReturn(s, (1.0 - d) * y, g_[i]);
             sxx[i] = s.xx;
             szz[i] = s.zz;
             sxz[i] = s.xz;
@@ -422,7 +523,10 @@ void StrengthModel::refreshPoints(const PairArrays& a, std::size_t n, const doub
     }
     const strength::Material& sm = *solids_[k];
     const double eta = rho / rho0_[k];
-    const double g = strength::shearModulus(sm, a.p[i], sm.thermal.temperature(eta, e[i]), eta);
+    const EtaTerms& et = etaTerms(i, k, eta);
+    const double temp = sm.thermal.temperatureAbove(et.cold, e[i]);
+    const auto* sg = std::get_if<strength::SteinbergGuinan>(&sm.yield);
+    const double g = sg ? sg->shearModulusAt(a.p[i], temp, et.cbrt) : sm.shearModulus;
     g_[i] = g;
     cL[i] = strength::longitudinalSoundSpeed(a.c[i], g, rho);
     // The radius weight rw (1 in planar geometry) as in the pressure's q = rw P / rho^2.
@@ -472,6 +576,49 @@ void StrengthModel::pass(const PairArrays& a, std::size_t n, const NeighbourList
     dispatch<CubicSplineKernel>(rz, switch_, cached, pairs, a, n, list, pts_, sxx.data(),
                                 szz.data(), sxz.data(), g_.data(), hFactor_, power_, axis, out, rs,
                                 sw);
+}
+
+bool StrengthModel::fusable() const {
+  // The widths dispatchFused picks from.
+  return kernel_ == cases::Kernel::Gaussian &&
+         ((laneWidth() >= 8 && stressRowKernelAvx512(false, false, true)) ||
+          (laneWidth() >= 4 && stressRowKernelAvx2(false, false, true)));
+}
+
+void StrengthModel::passWithForces(const PairArrays& a, std::size_t n, const NeighbourList& list,
+                                   bool cached, const AxisCorrection* axis, bool viscous,
+                                   bool compatible, const MonaghanViscosity& visc,
+                                   const Rates& out) {
+  const StressRates rs{dsxx_.data(), dszz_.data(), dsxz_.data(), rate_.data()};
+  const bool pairs = !cached && out.pairWx != nullptr;
+  const bool rz = axis != nullptr;
+  const SwitchArgs sw{pts_.alpha.data(), switch_ ? visc_.beta / visc_.alpha : 0.0, divv_.data()};
+  const ForceArgs force{rowKernel(rz, viscous, cached, compatible), visc};
+  const auto run = [&](auto rzTag, auto swTag, auto fTag) {
+    dispatchFused<decltype(rzTag)::value, decltype(swTag)::value, decltype(fTag)::value>(
+        cached, pairs, a, n, list, pts_, sxx.data(), szz.data(), sxz.data(), g_.data(), hFactor_,
+        power_, axis, out, rs, sw, force);
+  };
+  using T = std::true_type;
+  using N = std::false_type;
+  using Inv = std::integral_constant<Force, Force::Inviscid>;
+  using Vis = std::integral_constant<Force, Force::Viscous>;
+  // The switched viscosity is this pass's: the force kernel then runs inviscid.
+  if (rz) {
+    if (switch_)
+      run(T{}, T{}, Inv{});
+    else if (viscous)
+      run(T{}, N{}, Vis{});
+    else
+      run(T{}, N{}, Inv{});
+  } else {
+    if (switch_)
+      run(N{}, T{}, Inv{});
+    else if (viscous)
+      run(N{}, N{}, Vis{});
+    else
+      run(N{}, N{}, Inv{});
+  }
 }
 
 void StrengthModel::enablePlasticStrainRate(std::size_t n) {

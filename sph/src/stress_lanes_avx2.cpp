@@ -9,12 +9,12 @@
 #include "detail/stress_lanes_impl.hpp"
 
 namespace hvi::sph::detail {
-StressRowKernel stressRowKernelAvx2(bool rz, bool viscositySwitch) {
-  return stress_lanes_avx2::pickStress(rz, viscositySwitch);
+StressRowKernel stressRowKernelAvx2(bool rz, bool viscositySwitch, bool fused) {
+  return stress_lanes_avx2::pickStress(rz, viscositySwitch, fused);
 }
 }  // namespace hvi::sph::detail
 #else
 namespace hvi::sph::detail {
-StressRowKernel stressRowKernelAvx2(bool, bool) { return nullptr; }
+StressRowKernel stressRowKernelAvx2(bool, bool, bool) { return nullptr; }
 }  // namespace hvi::sph::detail
 #endif

@@ -19,6 +19,14 @@ struct LaneArrays {
   const int* obj;
 };
 
+//! What a row's force kernel computed of each pair, slot k for the k-th neighbour, for the
+//! strength pass's kernel to read instead of computing it again (docs/strength.md, "Cost of
+//! strength in SPH"): x_i - x_j, v_i - v_j, h_j, W_ij and grad W_ij / r_ij (f, grad_i W_ij =
+//! f (dx, dz)). Whole blocks of lanes are stored (the lanes past the row included).
+struct PairGeometry {
+  double *dx, *dz, *dvx, *dvz, *hj, *w, *f;
+};
+
 //! Per-pair terms of one row, slot k for the k-th neighbour (capacity: the row's count rounded
 //! up to 8). A pair with W_ij = 0 has all terms 0, as if skipped.
 struct RowTerms {
@@ -33,6 +41,7 @@ struct RowTerms {
   double *axj = nullptr, *azj = nullptr, *dej = nullptr, *drhoj = nullptr;
   double *pwxj = nullptr, *pwzj = nullptr;
   // (A half kernel with pwx and a null ax writes the pair data pwx, pwz, pwxj, pwzj only.)
+  const PairGeometry* geom = nullptr;  //!< if not null (full rows): each pair's geometry
 };
 
 //! Terms of row i: `nb` its cnt neighbours, `wc` their cached W (cached pass, when the list
@@ -71,6 +80,9 @@ RowKernel rowKernelAvx2(bool rz, bool viscous, bool cached, bool compatible, boo
 ScanKernel scanKernelBaseline();
 ScanKernel scanKernelAvx512();  //!< null without compiler support
 ScanKernel scanKernelAvx2();    //!< null without compiler support
+//! The widest of rowKernelAvx512, rowKernelAvx2 and rowKernelBaseline the CPU has (laneWidth),
+//! full rows.
+RowKernel rowKernel(bool rz, bool viscous, bool cached, bool compatible);
 //! The lane width the passes use: the widest the CPU has (8 AVX-512, 4 AVX2, else 2), capped
 //! by the environment variable HVI_SPH_LANES (2, 4 or 8) for side-by-side measurements.
 int laneWidth();

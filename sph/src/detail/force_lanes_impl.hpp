@@ -3,7 +3,7 @@
 //! inline function of another header: an AVX-512 copy of a shared inline function could
 //! otherwise be the one the linker keeps for the baseline code.
 #include <cstdint>
-#if HVI_LANES == 8 && defined(__AVX512F__)
+#if (HVI_LANES == 8 && defined(__AVX512F__)) || (HVI_LANES == 4 && defined(__AVX2__))
 #include <immintrin.h>
 #endif
 
@@ -66,6 +66,16 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
     const D f = -2.0 * ih2 * (w + GK::tail * (9.0 - r2 * ih2) * GK::norm * ih2);
     const D gx = f * dx, gz = f * dz;
     const D dvx = vxi - gather(a.vx, idx), dvz = vzi - gather(a.vz, idx);
+    if (!Half && out.geom) {
+      const PairGeometry& g = *out.geom;
+      store(g.dx + k, dx);
+      store(g.dz + k, dz);
+      store(g.dvx + k, dvx);
+      store(g.dvz + k, dvz);
+      store(g.hj + k, hj);
+      store(g.w + k, w);
+      store(g.f + k, f);
+    }
     const D vdg = dvx * gx + dvz * gz;
     const D qj = gather(a.q, idx), muj = gather(a.mu, idx);
     D coef = qi + qj;

@@ -21,10 +21,18 @@ inline D gather(const double* p, const int* idx) {
 }
 
 inline D select(I m, D a, D b) { return m ? a : b; }
+// (The including file includes <immintrin.h> for AVX2 / AVX-512 builds: one test instruction
+// instead of a lane-by-lane OR, which compiled to ~15 extracts.)
 inline bool anyLane(I m) {
+#if HVI_LANES == 8 && defined(__AVX512F__)
+  return _mm512_test_epi64_mask((__m512i)m, (__m512i)m) != 0;
+#elif HVI_LANES == 4 && defined(__AVX2__)
+  return _mm256_testz_si256((__m256i)m, (__m256i)m) == 0;
+#else
   std::int64_t any = 0;
   for (int l = 0; l < L; ++l) any |= m[l];
   return any != 0;
+#endif
 }
 inline void store(double* p, D v) { __builtin_memcpy(p, &v, sizeof v); }
 inline D vabs(D v) { return (D)((I)v & (I{} + INT64_MAX)); }  // clears the sign bit

@@ -105,6 +105,10 @@ struct Stepper::Impl {
   // remainder, instead of the remainder recomputing them (with strength, whose pass adds to
   // them, always; else only with HVI_SPH_STORE_PAIRS=1: docs/performance.md, "SPH memory").
   bool storePairs = false;
+  // With strength: the force passes run inside the strength pass (StrengthModel::passWithForces,
+  // the same bits; HVI_SPH_FUSED=0 keeps them apart, for side-by-side runs).
+  bool fused = false;
+  bool viscous = false;  // the force passes' viscosity (off with the viscosity switch)
 
   std::size_t n = 0;           // real particles
   detail::PairArrays a;        // reals, then ghosts

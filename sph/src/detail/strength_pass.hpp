@@ -84,6 +84,21 @@ class StrengthModel {
   void pass(const PairArrays& a, std::size_t n, const NeighbourList& list, bool cached,
             const AxisCorrection* axis, const Rates& out);
 
+  //! Whether passWithForces runs here: the Gaussian kernel in lanes of 4 or more (the stress
+  //! lane kernels).
+  [[nodiscard]] bool fusable() const;
+  //! The force pass over full rows (the lane kernel of selectForcePass(Gaussian, rz, viscous,
+  //! compatible, cached): ax, az, de and its drho, phi, pair data and hoop acceleration written)
+  //! and then this pass's terms added, in one sweep over the rows: per row the force kernel,
+  //! whose pair geometry (dx, dv, h_j, W, grad W) the stress kernel reads instead of computing
+  //! it again. The same bits as the force pass over all rows followed by pass() (rows are
+  //! independent in both). Not with the r-z symmetric form or the axis matrix (the ring form's
+  //! `axis` only). With the viscosity switch `viscous` is false (the switched viscosity is
+  //! this pass's).
+  void passWithForces(const PairArrays& a, std::size_t n, const NeighbourList& list, bool cached,
+                      const AxisCorrection* axis, bool viscous, bool compatible,
+                      const MonaghanViscosity& visc, const Rates& out);
+
   //! Morris and Monaghan's (1997) viscosity switch (docs/strength.md, "Viscosity switch"): the
   //! pass then adds the Monaghan viscosity with the pair's alpha_ij = (alpha_i + alpha_j) / 2
   //! and beta_ij = beta alpha_ij / alpha (the force passes must run inviscid), and the step's
@@ -115,6 +130,21 @@ class StrengthModel {
   int power_;
   bool fracture_;
   std::vector<double> g_;  // shear modulus of the reals at the last refresh, Mbar
+  // The terms of one eta and one eps_p per real particle, kept between the calls that share
+  // them (docs/strength.md, "Cost of strength in SPH"): the half state's advance, refresh and
+  // the step's end read one eta and (before the end counts it) one eps_p. Recomputed where the
+  // key differs, so a value read is the one the call would compute (the same bits); NaN keys
+  // (resize, compact) recompute.
+  struct EtaTerms {
+    double eta, cold, cbrt;  // key, cold energy, cbrt(eta) (SG)
+    double meltEta, melt;    // SG's T_m(eta), computed where a yield reads it (its own key)
+  };
+  struct HardTerms {
+    double epsP, hard;  // key, SG's hardening
+  };
+  std::vector<EtaTerms> etaTerms_;
+  std::vector<HardTerms> hardTerms_;
+  EtaTerms& etaTerms(std::size_t i, std::size_t k, double eta);
   std::vector<double> sxx0_, szz0_, sxz0_, dsxx_, dszz_, dsxz_, rate_;
   StressPoints pts_;
   bool switch_ = false;

@@ -9,6 +9,8 @@
 #pragma once
 #include <cstddef>
 
+#include "detail/force_lanes.hpp"  // PairGeometry
+
 namespace hvi::sph::detail {
 
 //! What the stress pair terms read of every point (reals and ghosts).
@@ -28,6 +30,13 @@ struct StressRowTerms {
   double *ax, *az, *de;           //!< stressPairTerm's
   double* hoop;                   //!< r-z: mu_j htt_j W_ij
   double* phi;                    //!< viscosity switch: phi_ij (<= 0)
+  //! If not null, 3 doubles the kernel keeps W(dp) of the last row's h_i in (h_i, q2dp, W(dp);
+  //! start with a NaN h_i), for the next row of the same h_i (the same value).
+  double* wdpMemo = nullptr;
+  //! If not null (the fused half-state pass with compatible energy): the row's pair data, to
+  //! which the kernel adds 0.5 ax, 0.5 az of each of the cnt slots (the stress power's even
+  //! share, as the pass would add them).
+  double *pwx = nullptr, *pwz = nullptr;
 };
 
 struct StressRowParams {
@@ -37,13 +46,15 @@ struct StressRowParams {
 };
 
 //! Terms of row i: `nb` its cnt neighbours, `wc` their cached W or null (W from positions).
+//! `geom`: the row's pair geometry as the force kernel of the same state stored it (the kernels
+//! picked with `fused`: read instead of computed, the same values), else null.
 using StressRowKernel = void (*)(const StressLaneArrays& a, std::size_t i, const int* nb,
                                  const double* wc, int cnt, const StressRowParams& p,
-                                 const StressRowTerms& out);
+                                 const StressRowTerms& out, const PairGeometry* geom);
 
-//! The kernel for (r-z, viscosity switch) compiled for AVX-512 / AVX2, or null without
+//! The kernel for (r-z, viscosity switch, fused) compiled for AVX-512 / AVX2, or null without
 //! compiler support (the caller checks the CPU with laneWidth()).
-StressRowKernel stressRowKernelAvx512(bool rz, bool viscositySwitch);
-StressRowKernel stressRowKernelAvx2(bool rz, bool viscositySwitch);
+StressRowKernel stressRowKernelAvx512(bool rz, bool viscositySwitch, bool fused = false);
+StressRowKernel stressRowKernelAvx2(bool rz, bool viscositySwitch, bool fused = false);
 
 }  // namespace hvi::sph::detail

@@ -6,6 +6,9 @@
 //! own namespace.
 #include <cstddef>
 #include <cstdint>
+#if (HVI_LANES == 8 && defined(__AVX512F__)) || (HVI_LANES == 4 && defined(__AVX2__))
+#include <immintrin.h>
+#endif
 
 #include "detail/stress_lanes.hpp"
 #include "hvi/sph/kernel.hpp"  // GaussianKernel's constants only
@@ -76,14 +79,28 @@ inline D gaussianW(D r2, D ih2) {
 }
 
 // strength_pass.cpp's stressPairs loop body for the Gaussian kernel, L pairs at a time.
-template <bool RZ, bool Switch>
+// Fused: dx, dz, dv, h_j, W and the gradient factor f read from the force kernel's stores
+// (`geom`), which computed them with these operations on the same operands.
+template <bool RZ, bool Switch, bool Fused>
 void row(const StressLaneArrays& a, std::size_t i, const int* nb, const double* wc, int cnt,
-         const StressRowParams& prm, const StressRowTerms& out) {
+         const StressRowParams& prm, const StressRowTerms& out, const PairGeometry* geom) {
   using GK = GaussianKernel;
   const double hiS = a.h[i];
   const double ih2iS = 1.0 / (hiS * hiS);
-  // W(dp) at h_i, as the scalar loop's K::value(q2dp h_i h_i, h_i, 1 / h_i^2).
-  const D wdpi = gaussianW(splat(prm.q2dp * hiS * hiS), splat(ih2iS));
+  // W(dp) at h_i, as the scalar loop's K::value(q2dp h_i h_i, h_i, 1 / h_i^2), kept for the next
+  // row of the same h_i (a latency-bound exponential per row otherwise).
+  D wdpi;
+  double* memo = out.wdpMemo;
+  if (memo && memo[0] == hiS && memo[1] == prm.q2dp) {
+    wdpi = splat(memo[2]);
+  } else {
+    wdpi = gaussianW(splat(prm.q2dp * hiS * hiS), splat(ih2iS));
+    if (memo) {
+      memo[0] = hiS;
+      memo[1] = prm.q2dp;
+      memo[2] = wdpi[0];
+    }
+  }
   const D xi = splat(a.x[i]), zi = splat(a.z[i]), vxi = splat(a.vx[i]), vzi = splat(a.vz[i]);
   const D hi = splat(hiS), ih2i = splat(ih2iS);
   const D tixx = splat(a.txx[i]), tizz = splat(a.tzz[i]), tixz = splat(a.txz[i]);
@@ -100,7 +117,7 @@ void row(const StressLaneArrays& a, std::size_t i, const int* nb, const double* 
       idx = pad;
     }
     const I inRow = lane < (I{} + (cnt - k));
-    const D hj = gather(a.h, idx);
+    const D hj = Fused ? load(geom->hj + k) : gather(a.h, idx);
     const I other = hj != hi;
     D hij = hi, ih2 = ih2i, wdp = wdpi;
     if (anyLane(other)) {
@@ -110,21 +127,33 @@ void row(const StressLaneArrays& a, std::size_t i, const int* nb, const double* 
       ih2 = select(other, ihm, ih2i);
       wdp = select(other, gaussianW(prm.q2dp * hm * hm, ihm), wdpi);
     }
-    const D dx = xi - gather(a.x, idx), dz = zi - gather(a.z, idx);
-    const D r2 = dx * dx + dz * dz;
-    D w;
-    if (wc) {
-      if (k + L <= cnt)
-        __builtin_memcpy(&w, wc + k, sizeof w);
-      else
-        for (int l = 0; l < L; ++l) w[l] = wc[k + l < cnt ? k + l : cnt - 1];
+    D dx, dz, w, f, dvx, dvz;
+    if constexpr (Fused) {
+      dx = load(geom->dx + k);
+      dz = load(geom->dz + k);
+      w = load(geom->w + k);
+      f = load(geom->f + k);
+      dvx = load(geom->dvx + k);
+      dvz = load(geom->dvz + k);
+      (void)wc;
     } else {
-      w = gaussianW(r2, ih2);
+      dx = xi - gather(a.x, idx);
+      dz = zi - gather(a.z, idx);
+      const D r2 = dx * dx + dz * dz;
+      if (wc) {
+        if (k + L <= cnt)
+          __builtin_memcpy(&w, wc + k, sizeof w);
+        else
+          for (int l = 0; l < L; ++l) w[l] = wc[k + l < cnt ? k + l : cnt - 1];
+      } else {
+        w = gaussianW(r2, ih2);
+      }
+      f = -2.0 * ih2 * (w + GK::tail * (9.0 - r2 * ih2) * GK::norm * ih2);
+      dvx = vxi - gather(a.vx, idx);
+      dvz = vzi - gather(a.vz, idx);
     }
     const I live = inRow & (w != 0.0);
-    const D f = -2.0 * ih2 * (w + GK::tail * (9.0 - r2 * ih2) * GK::norm * ih2);
     const D gx = f * dx, gz = f * dz;
-    const D dvx = vxi - gather(a.vx, idx), dvz = vzi - gather(a.vz, idx);
     D col[8];
     records(a.rec, idx, col);
     const D muj = col[7];
@@ -161,6 +190,7 @@ void row(const StressLaneArrays& a, std::size_t i, const int* nb, const double* 
         const D bij = prm.betaPerAlpha * aij;
         const D cbar = 0.5 * (splat(a.c[i]) + gather(a.c, idx));
         const D rhobar = 0.5 * (splat(a.rho[i]) + gather(a.rho, idx));
+        const D r2 = dx * dx + dz * dz;
         const D ph = hij * vdotx / (r2 + 0.01 * hij * hij);
         const D pi = (-aij * cbar * ph + bij * ph * ph) / rhobar;
         phi = select(approach, ph, zero);
@@ -173,18 +203,37 @@ void row(const StressLaneArrays& a, std::size_t i, const int* nb, const double* 
     }
     // stressPairTerm(t, mu_j, dvx, dvz, gx, gz)
     const D fx = txx * gx + txz * gz, fz = txz * gx + tzz * gz;
-    store(out.ax + k, select(live, muj * fx, zero));
-    store(out.az + k, select(live, muj * fz, zero));
+    const D sax = select(live, muj * fx, zero), saz = select(live, muj * fz, zero);
+    store(out.ax + k, sax);
+    store(out.az + k, saz);
     store(out.de + k, select(live, -0.5 * muj * (dvx * fx + dvz * fz), zero));
+    if (out.pwx) {
+      // The compatible energy's pair data: the stress power's even share, 1/2 (the pass's
+      // pwx[k] += 0.5 ax[k], lane by lane; the row has cnt slots, none past it written).
+      if (k + L <= cnt) {
+        store(out.pwx + k, load(out.pwx + k) + 0.5 * sax);
+        store(out.pwz + k, load(out.pwz + k) + 0.5 * saz);
+      } else {
+        for (int l = 0; k + l < cnt; ++l) {
+          out.pwx[k + l] += 0.5 * sax[l];
+          out.pwz[k + l] += 0.5 * saz[l];
+        }
+      }
+    }
     if constexpr (RZ) store(out.hoop + k, select(live, muj * gather(a.htt, idx) * w, zero));
   }
 }
 
 }  // namespace
 
-StressRowKernel pickStress(bool rz, bool sw) {
-  if (rz) return sw ? &row<true, true> : &row<true, false>;
-  return sw ? &row<false, true> : &row<false, false>;
+template <bool Fused>
+StressRowKernel pickStress2(bool rz, bool sw) {
+  if (rz) return sw ? &row<true, true, Fused> : &row<true, false, Fused>;
+  return sw ? &row<false, true, Fused> : &row<false, false, Fused>;
+}
+
+StressRowKernel pickStress(bool rz, bool sw, bool fused) {
+  return fused ? pickStress2<true>(rz, sw) : pickStress2<false>(rz, sw);
 }
 
 }  // namespace hvi::sph::detail::HVI_LANES_NS

@@ -394,6 +394,56 @@ TEST(SphStrength, RestartIsBitForBit) {
   EXPECT_GT(maxEps, 0.0);
 }
 
+// docs/strength.md, "Cost of strength in SPH": the force passes run inside the strength pass
+// (one sweep over the rows, the stress kernel reading the force kernel's W and gradient) give
+// the bits of the separate passes (HVI_SPH_FUSED=0): planar with compatible and symmetric
+// energy, with the viscosity switch, with fracture, and r-z; over steps of strong plastic flow.
+TEST(SphStrength, FusedPassesGiveTheSeparatePassesBits) {
+  struct Case {
+    const char* name;
+    cases::Scene scene;
+  };
+  std::vector<Case> runs;
+  runs.push_back({"compatible", blocks(0.0, cases::EnergyForm::Compatible)});
+  runs.push_back({"symmetric", blocks(0.0, cases::EnergyForm::Symmetric)});
+  cases::Scene sw = blocks(0.0, cases::EnergyForm::Compatible);
+  sw.sph.viscositySwitch = cases::ViscositySwitch::MorrisMonaghan;
+  runs.push_back({"switch", sw});
+  cases::Scene fr = blocks(0.0, cases::EnergyForm::Compatible);
+  fr.effects.insert(Effect::Fracture);
+  fr.materials[0].strength->spallStrength = 0.01;
+  runs.push_back({"fracture", fr});
+  runs.push_back({"rz", slab(0.02, 6, 0.3, 0.1, 0.05, 0.003, true, true)});
+  for (const Case& c : runs) {
+    SCOPED_TRACE(c.name);
+    ParticleSystem p[2];
+    StrengthFields f[2];
+    for (int fused = 0; fused < 2; ++fused) {
+      // Read by the stepper's constructor.
+      ASSERT_EQ(setenv("HVI_SPH_FUSED", fused ? "1" : "0", 1), 0);
+      SphSolver solver(c.scene);
+      for (int k = 0; k < 25; ++k) solver.advance(1e9);
+      p[fused] = solver.stepper().particles();
+      f[fused] = solver.stepper().strengthFields();
+    }
+    unsetenv("HVI_SPH_FUSED");
+    using hvi::test::sameBits;
+    EXPECT_TRUE(sameBits(p[0].x, p[1].x));
+    EXPECT_TRUE(sameBits(p[0].z, p[1].z));
+    EXPECT_TRUE(sameBits(p[0].vx, p[1].vx));
+    EXPECT_TRUE(sameBits(p[0].vz, p[1].vz));
+    EXPECT_TRUE(sameBits(p[0].e, p[1].e));
+    EXPECT_TRUE(sameBits(p[0].rho, p[1].rho));
+    EXPECT_TRUE(sameBits(f[0].sxx, f[1].sxx));
+    EXPECT_TRUE(sameBits(f[0].sxz, f[1].sxz));
+    EXPECT_TRUE(sameBits(f[0].plasticStrain, f[1].plasticStrain));
+    EXPECT_TRUE(sameBits(f[0].damage, f[1].damage));
+    EXPECT_TRUE(sameBits(f[0].viscosityAlpha, f[1].viscosityAlpha));
+    // Not a run at rest: the stress terms are doing work.
+    EXPECT_GT(*std::max_element(f[1].plasticStrain.begin(), f[1].plasticStrain.end()), 0.0);
+  }
+}
+
 // Snapshots carry the deviator, the plastic strain and the temperature with strength, and
 // nothing new without it.
 TEST(SphStrength, SnapshotFields) {

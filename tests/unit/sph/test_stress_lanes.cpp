@@ -7,6 +7,8 @@
 //! without it (the division skipped), and row lengths that are not a multiple of the lanes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <random>
 #include <vector>
@@ -26,7 +28,12 @@ using detail::StressRowTerms;
 
 struct Points {
   std::vector<double> x, z, vx, vz, h, mu, rho, c, rw, txx, tzz, txz, rxx, rzz, rxz, htt, alpha,
-      vol, rec;
+      vol, rec, q;
+  std::vector<int> obj;
+  detail::LaneArrays forceLanes() const {
+    return {x.data(), z.data(),  vx.data(), vz.data(), rho.data(), c.data(),
+            h.data(), mu.data(), rw.data(), q.data(),  obj.data()};
+  }
   detail::StressLaneArrays lanes() const {
     return {x.data(),   z.data(),   vx.data(),  vz.data(),    h.data(),   mu.data(),  rho.data(),
             c.data(),   rw.data(),  txx.data(), tzz.data(),   txz.data(), rxx.data(), rzz.data(),
@@ -64,6 +71,8 @@ Points randomPoints(std::size_t n, std::uint32_t seed) {
     p.htt.push_back(s * (u(gen) - 0.5));
     p.alpha.push_back(0.1 + 0.9 * u(gen));
     p.vol.push_back(p.mu.back() / p.rho.back());
+    p.q.push_back(1e-2 * u(gen));
+    p.obj.push_back(other ? 1 : 0);
   }
   for (std::size_t i = 0; i < n; ++i)
     for (const auto* v : {&p.txx, &p.tzz, &p.txz, &p.rxx, &p.rzz, &p.rxz, &p.vol, &p.mu})
@@ -124,19 +133,33 @@ bool same(double a, double b) {
   return std::memcmp(&a, &b, sizeof a) == 0 || (a == 0.0 && b == 0.0);
 }
 
-void checkKernel(StressRowKernel (*make)(bool, bool)) {
+// `force` (fused kernels): the force lane kernel of the same width, whose stored pair geometry
+// the stress kernel reads (StrengthModel::passWithForces), for each of its policies (cached
+// and half-state, viscous unless switched, compatible or not).
+void checkKernel(StressRowKernel (*make)(bool, bool, bool), bool fused = false,
+                 detail::RowKernel (*force)(bool, bool, bool, bool, bool) = nullptr) {
   const Points p = randomPoints(200, 7);
   const std::size_t n = p.x.size();
   std::vector<int> nb;
   for (std::size_t j = 0; j < n; ++j) nb.push_back(static_cast<int>(j));
-  std::vector<double> buf(9 * 208);
+  std::vector<double> buf(9 * 208 + 3);
   double* b = buf.data();
-  const StressRowTerms out{b, b + 208, b + 416, b + 624, b + 832, b + 1040, b + 1248, b + 1456,
-                           b + 1664};
+  StressRowTerms out{b, b + 208, b + 416, b + 624, b + 832, b + 1040, b + 1248, b + 1456, b + 1664};
+  // W(dp) kept from row to row (the rows below alternate h_i: every 7th point has another h).
+  out.wdpMemo = b + 9 * 208;
+  out.wdpMemo[0] = std::nan("");
+  std::vector<double> fbuf(15 * 208);
+  double* f = fbuf.data();
+  const detail::PairGeometry geom{f + 8 * 208,  f + 9 * 208,  f + 10 * 208, f + 11 * 208,
+                                  f + 12 * 208, f + 13 * 208, f + 14 * 208};
+  detail::RowTerms ft{f,           f + 208,     f + 2 * 208, f + 3 * 208,
+                      f + 4 * 208, f + 5 * 208, f + 6 * 208, f + 7 * 208};
+  ft.geom = &geom;
+  std::vector<double> pw0(n + 1), pwx(n + 1), pwz(n + 1);
   long pairs = 0, live = 0;
   for (bool rz : {false, true})
     for (bool sw : {false, true}) {
-      const StressRowKernel k = make(rz, sw);
+      const StressRowKernel k = make(rz, sw, fused);
       ASSERT_NE(k, nullptr);
       for (int power : {0, 4}) {
         const StressRowParams prm{1.0 / (1.2 * 1.2), power, 2.0};
@@ -146,7 +169,26 @@ void checkKernel(StressRowKernel (*make)(bool, bool)) {
             std::vector<int> row;
             for (std::size_t j = n; j-- > 0 && static_cast<int>(row.size()) < cnt;)
               if (j != i) row.push_back(static_cast<int>(j));
-            k(p.lanes(), i, row.data(), nullptr, cnt, prm, out);
+            if (fused) {
+              // The force kernel's policy varies with the row: its geometry must not.
+              const bool cached = cnt % 2 == 1, compatible = i % 2 == 0;
+              const detail::RowKernel fk = force(rz, !sw && i % 3 != 1, cached, compatible, false);
+              ASSERT_NE(fk, nullptr);
+              std::fill(fbuf.begin(), fbuf.end(), std::nan(""));
+              fk(p.forceLanes(), i, row.data(), nullptr, cnt, 1.0, 2.0, ft);
+              // The pair data the kernel adds to (slot cnt, past the row, left alone).
+              for (int t = 0; t <= cnt; ++t) pw0[t] = 1e-3 * (t + 1);
+              pwx = pw0;
+              pwz = pw0;
+              out.pwx = pwx.data();
+              out.pwz = pwz.data();
+              k(p.lanes(), i, row.data(), nullptr, cnt, prm, out, &geom);
+              out.pwx = out.pwz = nullptr;
+              EXPECT_EQ(pwx[cnt], pw0[cnt]);
+              EXPECT_EQ(pwz[cnt], pw0[cnt]);
+            } else {
+              k(p.lanes(), i, row.data(), nullptr, cnt, prm, out, nullptr);
+            }
             for (int s = 0; s < cnt; ++s) {
               const Ref r = reference(p, i, static_cast<std::size_t>(row[s]), prm, rz, sw);
               ++pairs;
@@ -161,6 +203,9 @@ void checkKernel(StressRowKernel (*make)(bool, bool)) {
               }
               if (sw) {
                 ASSERT_TRUE(same(out.phi[s], r.phi));
+              }
+              if (fused) {
+                ASSERT_TRUE(same(pwx[s], pw0[s] + 0.5 * r.ax) && same(pwz[s], pw0[s] + 0.5 * r.az));
               }
             }
           }
@@ -180,6 +225,20 @@ TEST(StressLanes, Avx512LanesGiveTheScalarTermsBitForBit) {
   if (detail::laneWidth() < 8 || !detail::stressRowKernelAvx512(false, false))
     GTEST_SKIP() << "no AVX-512 on this CPU or compiler";
   checkKernel(&detail::stressRowKernelAvx512);
+}
+
+// docs/strength.md, "Cost of strength in SPH": the fused kernels read dx, dv, h_j, W and the
+// gradient factor from the force kernel's stores instead of computing them: the same terms.
+TEST(StressLanes, FusedAvx2LanesGiveTheScalarTermsBitForBit) {
+  if (detail::laneWidth() < 4 || !detail::stressRowKernelAvx2(false, false, true))
+    GTEST_SKIP() << "no AVX2 on this CPU or compiler: the scalar loop runs";
+  checkKernel(&detail::stressRowKernelAvx2, true, &detail::rowKernelAvx2);
+}
+
+TEST(StressLanes, FusedAvx512LanesGiveTheScalarTermsBitForBit) {
+  if (detail::laneWidth() < 8 || !detail::stressRowKernelAvx512(false, false, true))
+    GTEST_SKIP() << "no AVX-512 on this CPU or compiler";
+  checkKernel(&detail::stressRowKernelAvx512, true, &detail::rowKernelAvx512);
 }
 
 }  // namespace

@@ -109,13 +109,28 @@ struct SteinbergGuinan {
            std::pow(eta, 2.0 * (gamma0 - a - 1.0 / 3.0));
   }
   [[nodiscard]] double shearModulus(double p, double t, double eta) const {
-    return std::max(g0 + dGdP * p / std::cbrt(eta) + dGdT * (t - 300.0), 0.0);
+    return shearModulusAt(p, t, std::cbrt(eta));
   }
   [[nodiscard]] double yield(const YieldInput& in) const {
-    if (in.temperature >= meltTemperature(in.compression)) return 0.0;
-    const double hard =
-        std::min(y0 * std::pow(1.0 + beta * (in.plasticStrain + initialStrain), n), yMax);
-    return hard * shearModulus(in.pressure, in.temperature, in.compression) / g0;
+    return yieldFrom(in, meltTemperature(in.compression), hardening(in.plasticStrain),
+                     std::cbrt(in.compression));
+  }
+  // The pieces of yield and shearModulus, for a caller that keeps the terms of one eta or
+  // eps_p between calls (SPH: the two advances of a step share eta and eps_p): the same
+  // operations, so the same bits.
+  //! G with cbrt(eta) given.
+  [[nodiscard]] double shearModulusAt(double p, double t, double cbrtEta) const {
+    return std::max(g0 + dGdP * p / cbrtEta + dGdT * (t - 300.0), 0.0);
+  }
+  //! min(Y0 [1 + beta (eps_p + eps_i)]^n, Ymax).
+  [[nodiscard]] double hardening(double plasticStrain) const {
+    return std::min(y0 * std::pow(1.0 + beta * (plasticStrain + initialStrain), n), yMax);
+  }
+  //! Y from T_m(eta), the hardening and cbrt(eta) of `in`.
+  [[nodiscard]] double yieldFrom(const YieldInput& in, double meltT, double hard,
+                                 double cbrtEta) const {
+    if (in.temperature >= meltT) return 0.0;
+    return hard * shearModulusAt(in.pressure, in.temperature, cbrtEta) / g0;
   }
 };
 
@@ -139,7 +154,11 @@ struct Thermal {
     return bulkSoundSpeed * bulkSoundSpeed * (std::log(eta) + 1.0 / eta - 1.0);
   }
   [[nodiscard]] double temperature(double eta, double e) const {
-    return t0 + std::max(e - coldEnergy(eta), 0.0) / cv;
+    return temperatureAbove(coldEnergy(eta), e);
+  }
+  //! temperature(eta, e) with coldEnergy(eta) given (the same bits).
+  [[nodiscard]] double temperatureAbove(double cold, double e) const {
+    return t0 + std::max(e - cold, 0.0) / cv;
   }
 };
 
