@@ -58,12 +58,11 @@ double TvdSolver::signalSpeedCut(double* vx, double* vz, long* worstCell) const 
                 if (!(a >= kPhaseAbsent)) return 0;
                 const double r = q.rho[cc] / a;
                 if (r == 0.0) return 0;  // emptied by the positivity limiter; filled by repair
-                // Below the vacuum density a cell is vacuum whatever the sign of its mass: the
-                // kernel's resetThin puts it at rest and cold as it is (docs/tvd.md, "Vacuum
-                // cells of negative mass"); its mass still counts, and it sets no time step.
-                if (r < 0.0 && r > -rhoCut_[static_cast<std::size_t>(p)] && q.mx[cc] == 0.0 &&
-                    q.mz[cc] == 0.0 && q.E[cc] == 0.0)
-                  return 0;
+                // Below the vacuum density a cell is vacuum whatever the sign of its mass and
+                // whatever it still moves with: the kernel's resetThin puts it at rest and cold
+                // in the next sweep, booked (docs/tvd.md, "Vacuum cells of negative mass"); its
+                // mass still counts, and it sets no time step.
+                if (r < 0.0 && r > -rhoCut_[static_cast<std::size_t>(p)]) return 0;
                 if (!(r > 0.0)) return -1;
                 if (r < rhoStep) return 0;  // below the time-step density: not in the CFL
                 s = detail::cellState(eos, r, q.mx[cc] / a, q.mz[cc] / a, q.E[cc] / a);

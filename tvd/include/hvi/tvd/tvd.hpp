@@ -102,6 +102,7 @@ class TvdSolver final : public Solver {
   //! Conservative cut-cell interfaces (each phase its own state on its part of the cells).
   [[nodiscard]] bool cutCells() const { return cut_; }
   [[nodiscard]] const Phases& phases() const { return phases_; }  //!< cut-cell mode only
+  Phases& phasesForTesting() { return phases_; }
   [[nodiscard]] const Ownership& ownership() const { return ownership_; }  //!< markers only
   [[nodiscard]] const MarkerSet& markers() const { return ownership_.markers(); }
   //! Configuration array: owning object per cell, -1 vacuum (markers only; empty otherwise).
