@@ -187,7 +187,7 @@ std::string sceneToml(const ShieldSpec& s) {
     // Outflow as the production Eulerian codes treat it: what leaves is gone. With the zero-
     // gradient ghost ("open") the debris leaving the plates' rim and the ejecta leaving the
     // top came back in, and the lines beyond the sides stretched until the Whipple run at
-    // 0.0423 cm stopped (docs/shield.md, "TVD outflow").
+    // 0.0423 cm stopped (docs/shield.md, "The generated scene").
     out += fmt::format(
         "[tvd]\ncell_size = {}\nlimiter = \"minmod\"\ncfl = 0.4\nmarker_spacing = "
         "0.5\noutflow = \"no_reentry\"\n\n",

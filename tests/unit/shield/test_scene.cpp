@@ -134,7 +134,7 @@ TEST(ShieldScene, SphPlatesCarryStrengthAndSpall) {
   EXPECT_TRUE(tvd.has(cases::Effect::Fracture));
   EXPECT_FALSE(tvd.has(cases::Effect::TensionCutoff));
   EXPECT_EQ(tvd.tvd.interfaces, cases::InterfaceMode::Conservative);
-  // What leaves through an outflow side does not come back (docs/shield.md, "TVD outflow").
+  // What leaves through an outflow side does not come back (docs/shield.md, "The generated scene").
   EXPECT_EQ(tvd.tvd.outflow, cases::OutflowMode::NoReentry);
   for (const auto& m : tvd.materials) EXPECT_TRUE(m.strength.has_value()) << m.name;
 }
