@@ -42,24 +42,35 @@ inline double shockSlope(const CellState& s) { return std::clamp(1.0 + 0.5 * s.g
 //! product with it is zero anyway.
 inline double impedance(const CellState& s) { return s.rho * (s.c + 1e-30); }
 
+//! Two-shock Riemann problem along n between material states L and R (normal velocities uL,
+//! uR): the star pressure p, tension included, and the star velocity u.
+struct TwoShock {
+  double p = 0.0, u = 0.0;
+};
+inline TwoShock twoShock(const CellState& L, const CellState& R, double uL, double uR,
+                         int iterations) {
+  double zL = impedance(L), zR = impedance(R);
+  TwoShock s;
+  for (int it = 0;; ++it) {
+    const double inv = 1.0 / (zL + zR);
+    s.p = ((zR * L.p + zL * R.p) + zL * zR * (uL - uR)) * inv;
+    s.u = ((zL * uL + zR * uR) + (L.p - R.p)) * inv;
+    if (it == iterations) break;
+    zL = L.rho * ((L.c + 1e-30) + shockSlope(L) * std::max(uL - s.u, 0.0));
+    zR = R.rho * ((R.c + 1e-30) + shockSlope(R) * std::max(s.u - uR, 0.0));
+  }
+  return s;
+}
+
 //! Two-shock contact Riemann problem along n between material states L and R.
 inline ContactStar contactStar(const CellState& L, const CellState& R, double nn, double nt,
                                int iterations = 2) {
   const double uL = L.u * nn + L.w * nt, uR = R.u * nn + R.w * nt;
-  double zL = impedance(L), zR = impedance(R);
-  double p = 0.0, u = 0.0;
-  for (int it = 0;; ++it) {
-    const double inv = 1.0 / (zL + zR);
-    p = ((zR * L.p + zL * R.p) + zL * zR * (uL - uR)) * inv;
-    u = ((zL * uL + zR * uR) + (L.p - R.p)) * inv;
-    if (it == iterations) break;
-    zL = L.rho * ((L.c + 1e-30) + shockSlope(L) * std::max(uL - u, 0.0));
-    zR = R.rho * ((R.c + 1e-30) + shockSlope(R) * std::max(u - uR, 0.0));
-  }
+  const TwoShock t = twoShock(L, R, uL, uR, iterations);
   ContactStar s;
-  if (p > 0.0) {
-    s.p = p;
-    s.uL = s.uR = u;
+  if (t.p > 0.0) {
+    s.p = t.p;
+    s.uL = s.uR = t.u;
   } else {
     // No tension across an interface: the sides separate, each released to P = 0.
     s.p = 0.0;
@@ -78,20 +89,9 @@ inline ContactStar contactStar(const CellState& L, const CellState& R, double nn
 //! axis"). Bounded below by the cells' own tension, and equal to contactStar's p* where neither
 //! cell is in tension (the tension cut-off, gases: bit for bit as before).
 inline double facePressure(const CellState& L, const CellState& R, int iterations) {
-  const ContactStar s = contactStar(L, R, 1.0, 0.0, iterations);
+  const double p = twoShock(L, R, L.u, R.u, iterations).p;
   const double floor = std::min({0.0, L.p, R.p});
-  if (!(floor < 0.0)) return s.p;
-  const double uL = L.u, uR = R.u;
-  double zL = impedance(L), zR = impedance(R);
-  double p = 0.0, u = 0.0;
-  for (int it = 0;; ++it) {
-    const double inv = 1.0 / (zL + zR);
-    p = ((zR * L.p + zL * R.p) + zL * zR * (uL - uR)) * inv;
-    u = ((zL * uL + zR * uR) + (L.p - R.p)) * inv;
-    if (it == iterations) break;
-    zL = L.rho * ((L.c + 1e-30) + shockSlope(L) * std::max(uL - u, 0.0));
-    zR = R.rho * ((R.c + 1e-30) + shockSlope(R) * std::max(u - uR, 0.0));
-  }
+  if (!(floor < 0.0)) return p > 0.0 ? p : 0.0;  // contactStar's p*
   return std::max(p, floor);
 }
 
