@@ -2,6 +2,7 @@
 #include "hvi/sph/sph.hpp"
 
 #include <numbers>
+#include <string_view>
 #include <type_traits>
 
 #include <fmt/format.h>
@@ -54,18 +55,18 @@ void validate(const cases::Scene& scene) {
       throw InputError(fmt::format("{}: sph.alpha_min = {} must be <= sph.alpha = {}", scene.path,
                                    scene.sph.alphaMin, scene.sph.alpha));
   }
-  if (scene.geometry == Geometry::Axisymmetric && scene.sph.rzViscousHoop != 0.0 &&
-      resolvedRzForm(scene) != cases::RzForm::Symmetric)
-    throw InputError(scene.path +
-                     ": sph.rz_viscous_hoop is implemented for the symmetric r-z form only "
-                     "(docs/sph-rz.md); set sph.rz_viscous_hoop = 0 or sph.rz_form = "
-                     "\"symmetric\" (\"auto\" is the ring form with strength)");
-  if (scene.geometry == Geometry::Axisymmetric && scene.sph.rzAxisCorrection != 0.0 &&
-      resolvedRzForm(scene) != cases::RzForm::Symmetric)
-    throw InputError(scene.path +
-                     ": sph.rz_axis_correction is implemented for the symmetric r-z form only "
-                     "(docs/sph-rz.md); set sph.rz_axis_correction = 0 or sph.rz_form = "
-                     "\"symmetric\"");
+  // Options of the symmetric r-z form only.
+  auto symmetricOnly = [&](double value, std::string_view key, std::string_view note) {
+    if (scene.geometry == Geometry::Axisymmetric && value != 0.0 &&
+        resolvedRzForm(scene) != cases::RzForm::Symmetric)
+      throw InputError(fmt::format(
+          "{}: sph.{} is implemented for the symmetric r-z form only (docs/sph-rz.md); set "
+          "sph.{} = 0 or sph.rz_form = \"symmetric\"{}",
+          scene.path, key, key, note));
+  };
+  symmetricOnly(scene.sph.rzViscousHoop, "rz_viscous_hoop",
+                " (\"auto\" is the ring form with strength)");
+  symmetricOnly(scene.sph.rzAxisCorrection, "rz_axis_correction", "");
   if (!(scene.sph.alpha >= 0.0) || !(scene.sph.beta >= 0.0))
     throw InputError(fmt::format("{}: sph.alpha = {} and sph.beta = {} must be >= 0", scene.path,
                                  scene.sph.alpha, scene.sph.beta));
