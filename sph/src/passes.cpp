@@ -105,35 +105,8 @@ void forcePass(const PairArrays& a, std::size_t nReal, const NeighbourList& list
       if (viscHoop) shoopPi += r.hoopPi;
       if constexpr (Viscous && Cached) phi = std::min(phi, r.phi);
     }
-    if constexpr (RZ) {
-      if (ring) {
-        const double hoopAx =
-            symmetricRz(a, i, ring, K::value(0.0, A.h), sax, saz, sde, shoop, shoopPi, out);
-        if constexpr (kPairs) out.hoopAx[i] = hoopAx;
-        if constexpr (Cached) out.drho[i] = sdrho;
-        if constexpr (Cached) out.phi[i] = phi;
-        continue;
-      }
-      // docs/sph-rz.md: the sums carry r_j weights; divide by r_i and add the hoop terms,
-      // whose self parts (j = i) come from d mu_i / d r_i, corrected for the axis bias.
-      const double wii = K::value(0.0, A.h);
-      const double hoop = (shoop + A.mu * A.q * wii) * (*axis)(A.rw, A.h);
-      const double inv = 1.0 / A.rw;
-      const double sgn = A.x >= 0.0 ? 1.0 : -1.0;  // a particle briefly past the axis
-      const double hoopAx = sgn * hoop * inv * inv;
-      out.ax[i] = sax * inv + hoopAx;
-      if constexpr (kPairs) out.hoopAx[i] = hoopAx;
-      out.az[i] = saz * inv;
-      out.de[i] = sde * inv + A.lam * hoop * inv;
-      // The weight part of the continuity rate is the predictor's (weightChange).
-      if constexpr (Cached) out.drho[i] = sdrho;
-    } else {
-      out.ax[i] = sax;
-      out.az[i] = saz;
-      out.de[i] = sde;
-      if constexpr (Cached) out.drho[i] = sdrho;
-    }
-    if constexpr (Cached) out.phi[i] = phi;
+    forceRowRates<RZ, Viscous, Cached, Compatible, K>(
+        a, i, ForceRowSums{sax, saz, sde, sdrho, shoop, shoopPi, phi}, axis, ring, out);
   }
 }
 

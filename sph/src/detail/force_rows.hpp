@@ -48,8 +48,8 @@ inline void addForceTerms(ForceRowSums& s, const RowTerms& t, int k) {
   if constexpr (Viscous && Cached) s.phi = std::min(s.phi, t.phi[k]);
 }
 
-// Row i's rates from its sums (forcePass's).
-template <bool RZ, bool Viscous, bool Cached, bool Compatible>
+// Row i's rates from its sums: the scalar forcePass's (kernel K) and the lane passes'.
+template <bool RZ, bool Viscous, bool Cached, bool Compatible, class K = GaussianKernel>
 inline void forceRowRates(const PairArrays& a, std::size_t i, const ForceRowSums& s,
                           const AxisCorrection* axis, const RingScale* ring, const Rates& out) {
   constexpr bool kPairs = Compatible && !Cached;
@@ -57,16 +57,18 @@ inline void forceRowRates(const PairArrays& a, std::size_t i, const ForceRowSums
   const double shoopPi = s.hoopPi, phi = s.phi;
   if constexpr (RZ) {
     if (ring) {
-      const double hoopAx = symmetricRz(a, i, ring, GaussianKernel::value(0.0, a.h[i]), sax, saz,
+      const double hoopAx = symmetricRz(a, i, ring, K::value(0.0, a.h[i]), sax, saz,
                                         sde, shoop, shoopPi, out);
       if constexpr (kPairs) out.hoopAx[i] = hoopAx;
       if constexpr (Cached) out.drho[i] = sdrho;
       if constexpr (Cached) out.phi[i] = phi;
       return;
     }
-    // As forcePass (docs/sph-rz.md).
+    // docs/sph-rz.md: the sums carry r_j weights; divide by r_i and add the hoop terms, whose
+    // self parts (j = i) come from d mu_i / d r_i, corrected for the axis bias. The weight
+    // part of the continuity rate is the predictor's (weightChange).
     const double hi = a.h[i], rwi = a.rw[i];
-    const double wii = GaussianKernel::value(0.0, hi);
+    const double wii = K::value(0.0, hi);
     const double hoop = (shoop + a.mu[i] * a.q[i] * wii) * (*axis)(rwi, hi);
     const double inv = 1.0 / rwi;
     const double sgn = a.x[i] >= 0.0 ? 1.0 : -1.0;
