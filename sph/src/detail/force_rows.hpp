@@ -57,8 +57,8 @@ inline void forceRowRates(const PairArrays& a, std::size_t i, const ForceRowSums
   const double shoopPi = s.hoopPi, phi = s.phi;
   if constexpr (RZ) {
     if (ring) {
-      const double hoopAx = symmetricRz(a, i, ring, K::value(0.0, a.h[i]), sax, saz,
-                                        sde, shoop, shoopPi, out);
+      const double hoopAx =
+          symmetricRz(a, i, ring, K::value(0.0, a.h[i]), sax, saz, sde, shoop, shoopPi, out);
       if constexpr (kPairs) out.hoopAx[i] = hoopAx;
       if constexpr (Cached) out.drho[i] = sdrho;
       if constexpr (Cached) out.phi[i] = phi;
@@ -87,7 +87,6 @@ inline void forceRowRates(const PairArrays& a, std::size_t i, const ForceRowSums
   }
   if constexpr (Cached) out.phi[i] = phi;
 }
-
 
 // Row i's rates from its terms t (cnt slots), added up in list order as forcePass adds them.
 template <bool RZ, bool Viscous, bool Cached, bool Compatible>
