@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "eos_line.hpp"
 #include "hvi/common/error.hpp"
@@ -92,9 +93,13 @@ double TvdSolver::signalSpeedCut(double* vx, double* vz, long* worstCell) const 
 #pragma omp parallel for schedule(static) num_threads(threads_) if (c1 - c0 >= kParallelCells)
     for (long c = c0; c < c1; ++c) {
       const auto cc = static_cast<std::size_t>(c);
+      // A cell without material has no start velocity (NaN): one the phase enters during the
+      // step (an opened cell, CutLineSolver::openFaces) moves its markers with its end velocity
+      // alone (Ownership::centredVelocity), not half of it.
       const double r = U_.rho[cc];
-      vx[c] = r > 0.0 ? U_.mx[cc] / r : 0.0;
-      vz[c] = r > 0.0 ? U_.mz[cc] / r : 0.0;
+      constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+      vx[c] = r > 0.0 ? U_.mx[cc] / r : kNone;
+      vz[c] = r > 0.0 ? U_.mz[cc] / r : kNone;
     }
   }
   if (worstCell != nullptr) *worstCell = worst;

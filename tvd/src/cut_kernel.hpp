@@ -80,11 +80,16 @@ class CutLineSolver {
       ph.hi = -1;
       for (int j = 0; j < n_ + 4; ++j) {
         ph.present[j] = ph.alpha[j] >= kPhaseAbsent ? 1 : 0;
+        ph.virt[j] = 0;
         if (ph.present[j]) {
           ph.lo = std::min(ph.lo, j);
           ph.hi = j;
         }
       }
+    }
+    openFaces();
+    for (auto& ph : W_.phase) {
+      if (!ph.active) continue;
       for (int f = 0; f <= n_ + 2; ++f) {
         const bool l = ph.present[f] != 0, r = ph.present[f + 1] != 0;
         ph.ap[f] = l && r ? std::min(ph.gm[f], ph.gp[f]) : 0.0;
@@ -92,6 +97,65 @@ class CutLineSolver {
         ph.uR[f] = r ? std::max(ph.gp[f] - ph.ap[f], 0.0) : 0.0;
       }
     }
+  }
+
+  // An interface lying on a face (docs/tvd.md, "Interfaces on cell faces"): the phase wets
+  // the face from one side and the cell across holds nothing, so no paired face flux could
+  // carry the phase into that cell, and the first steps would compress the cells along the face
+  // (or rarefy them at a trailing edge) until the marker step gave the next cell a fraction.
+  // The empty cell is opened to the phase: it is present, the face is paired over the wetted
+  // part, and until the cell holds some of the phase the face carries the donor's own state at
+  // the donor's velocity, without pressure (the vacuum across does no work): exactly what
+  // crosses a face behind a free surface in a cut cell. A leading edge so enters the cell as a
+  // sliver; a trailing edge draws a negative part that absorbFading hands back to the donor,
+  // so the edge moves into it. Only where no other phase is in the cell (or opens it too): an
+  // interface between two phases on a face is the exchange's.
+  void openFaces() {
+    for (int p = 0; p < P_; ++p) {
+      PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
+      if (!ph.active) continue;
+      for (int j = 2; j <= n_ + 1; ++j) {
+        if (ph.present[j]) continue;
+        const bool lower = ph.present[j - 1] && j - 1 >= 2 && ph.gm[j - 1] > 0.0;
+        const bool upper = ph.present[j + 1] && j + 1 <= n_ + 1 && ph.gp[j] > 0.0;
+        if (lower != upper) ph.virt[j] = lower ? -1 : 1;
+      }
+    }
+    for (int j = 2; j <= n_ + 1; ++j) {
+      int claims = 0;
+      for (const auto& ph : W_.phase)
+        if (ph.active && (ph.present[j] || ph.virt[j])) ++claims;
+      for (auto& ph : W_.phase) {
+        if (!ph.active || !ph.virt[j]) continue;
+        if (claims > 1) {
+          ph.virt[j] = 0;
+          continue;
+        }
+        ph.present[j] = 1;
+        if (ph.virt[j] < 0)
+          ph.gp[j - 1] = ph.gm[j - 1];
+        else
+          ph.gm[j] = ph.gp[j];
+        ph.lo = std::min(ph.lo, j);
+        ph.hi = std::max(ph.hi, j);
+      }
+    }
+  }
+  // An opened cell that holds none of the phase yet (its state is the donor's, by the face).
+  bool unfilled(const PhaseLine& ph, int j) const {
+    return ph.virt[j] != 0 && !(ph.cs[j].rho > 0.0);
+  }
+  // The face flux into an unfilled opened cell: the donor's state U moved at its velocity u
+  // (no pressure term), and the volume it takes (u per unit aperture).
+  bool openFlux(PhaseLine& ph, int f) {
+    int donor = -1;
+    if (ph.virt[f + 1] < 0 && unfilled(ph, f + 1)) donor = f;
+    if (ph.virt[f] > 0 && unfilled(ph, f)) donor = f + 1;
+    if (donor < 0 || !(ph.cs[donor].rho > 0.0)) return false;
+    const double u = ph.cs[donor].u;
+    for (int k = 0; k < 4; ++k) ph.flux[f][k] = u * ph.U[k][donor];
+    ph.vflux[f] = u;
+    return true;
   }
 
   void fillPhaseGhosts(std::array<std::vector<double>, 4>& q) const {
@@ -109,10 +173,12 @@ class CutLineSolver {
 
   // In-cell interface area of phase `ph` in cell j along the line (outward of the phase), in
   // line units: the divergence theorem over the phase's part of the cell, so that a uniform
-  // pressure exerts no net force (planar: the aperture difference; radial: with the hoop term).
+  // pressure exerts no net force (planar: the aperture difference; radial: with the hoop term,
+  // whose force P alpha V / r is P alpha h in line units, V = r h: so I = alpha h - faces, and
+  // a full cell has none, r_R - r_L = h).
   double interfaceAlong(const PhaseLine& ph, int j) const {
     const double faces = W_.area[j] * ph.gm[j] - W_.area[j - 1] * ph.gp[j - 1];
-    if constexpr (Radial) return ph.alpha[j] / (W_.invVol[j] * W_.invR[j]) - faces;
+    if constexpr (Radial) return ph.alpha[j] * W_.invR[j] / W_.invVol[j] - faces;
     return -faces;
   }
   double interfacePlanar(const PhaseLine& ph, int j) const { return ph.gp[j - 1] - ph.gm[j]; }
@@ -144,8 +210,9 @@ class CutLineSolver {
           ph.g[j][l] = (l == 0 || l == 3) ? Lim::g(ph.fe[j - 1].alpha[l], ph.fe[j].alpha[l])
                                           : Superbee::g(ph.fe[j - 1].alpha[l], ph.fe[j].alpha[l]);
       for (int f = 1; f <= n_ + 1; ++f) {
+        ph.vflux[f] = 0.0;
         if (!(ph.ap[f] > 0.0) || !(ph.cs[f].rho > 0.0) || !(ph.cs[f + 1].rho > 0.0)) {
-          ph.flux[f] = {0.0, 0.0, 0.0, 0.0};
+          if (!(ph.ap[f] > 0.0) || !openFlux(ph, f)) ph.flux[f] = {0.0, 0.0, 0.0, 0.0};
           continue;
         }
         const FaceEigen& fe = ph.fe[f];
@@ -207,7 +274,9 @@ class CutLineSolver {
         [&](const auto& eos) {
           // The occupied span and one cell either side (the faces around it check them).
           for (int j = std::max(0, ph.lo - 1); j <= std::min(nb - 1, ph.hi + 1); ++j) {
-            if (!ph.present[j] || !(S[j] > kPhaseAbsent * ph.alpha[j])) {
+            // An opened cell (no fraction) holds a state once its part is above the absent
+            // fraction itself: below, 1 / S may overflow (a plate at rest moving by round-off).
+            if (!ph.present[j] || !(S[j] > kPhaseAbsent * (ph.virt[j] != 0 ? 1.0 : ph.alpha[j]))) {
               ph.cs[j] = CellState{};
               ph.sqrtRho[j] = 0.0;
               ph.F[j] = {0.0, 0.0, 0.0, 0.0};
@@ -405,9 +474,12 @@ class CutLineSolver {
     }
     // The phase's part of the cell grows or shrinks as its interface moves with it (the
     // interface area times the phase's velocity along the line); a full cell has no interface.
-    ph.volW[j] = S[j] + C_.dt * W_.invVol[j] * ph.cs[j].u * interfaceAlong(ph, j);
     const double lam = C_.dt * W_.invVol[j];
     const double aR = W_.area[j] * ph.ap[j], aL = W_.area[j - 1] * ph.ap[j - 1];
+    if (unfilled(ph, j))  // its part grows by the volume the donor's face moved in
+      ph.volW[j] = S[j] + lam * (aL * ph.vflux[j - 1] - aR * ph.vflux[j]);
+    else
+      ph.volW[j] = S[j] + lam * ph.cs[j].u * interfaceAlong(ph, j);
     const double* FR = ph.flux[j].data();
     const double* FL = ph.flux[j - 1].data();
     for (int k = 0; k < 4; ++k)
@@ -432,7 +504,9 @@ class CutLineSolver {
   }
   // A cell keeps a state worth checking while its part is not a fading sliver.
   bool live(const PhaseLine& ph, int j, bool first) const {
-    return judgedVolume(ph, j, first) >= kLiveFraction * ph.alpha[j];
+    const double v = judgedVolume(ph, j, first);
+    if (ph.virt[j] != 0 && !(v > 0.0)) return false;  // opened, still empty
+    return v >= kLiveFraction * ph.alpha[j];
   }
 
   // As the whole-cell kernel: faces of a live cell the TVD flux leaves unphysical are

@@ -27,6 +27,12 @@ struct PhaseLine {
   std::vector<double> uL, uR;  // unpaired wet part of a face seen from its lower / upper cell
   std::vector<double> It;      // in-cell interface area across the line (planar form)
   std::vector<unsigned char> present;
+  // An empty cell beyond a face the phase wets from one side only, with no other phase in it
+  // (the interface lies on the face, against vacuum): -1 if its donor is the lower neighbour,
+  // +1 if the upper one, else 0. Until it holds some of the phase, the face between them
+  // carries the donor's own state at the donor's velocity (vflux, per unit aperture).
+  std::vector<signed char> virt;
+  std::vector<double> vflux;
   std::vector<unsigned char> dry;  // faces a trailing edge crossed in this stage
   std::vector<CellState> cs;
   std::vector<double> sqrtRho;

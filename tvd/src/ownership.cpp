@@ -101,8 +101,12 @@ void Ownership::centredVelocity(const Conserved& U, double dt, int rowLo, int ro
       continue;
     }
     if (cutCells_) {
-      vx[c] = 0.5 * (std::clamp(vx0[c], -vmax, vmax) + std::clamp(mx[c] / rho[c], -vmax, vmax));
-      vz[c] = 0.5 * (std::clamp(vz0[c], -vmax, vmax) + std::clamp(mz[c] / rho[c], -vmax, vmax));
+      // No start velocity (NaN: the cell held no material at the step's start, and the phase
+      // entered it through an opened face): the end velocity alone.
+      const double ux = std::clamp(mx[c] / rho[c], -vmax, vmax);
+      const double uz = std::clamp(mz[c] / rho[c], -vmax, vmax);
+      vx[c] = std::isnan(vx0[c]) ? ux : 0.5 * (std::clamp(vx0[c], -vmax, vmax) + ux);
+      vz[c] = std::isnan(vz0[c]) ? uz : 0.5 * (std::clamp(vz0[c], -vmax, vmax) + uz);
     } else {
       vx[c] = 0.5 * (vx0[c] + mx[c] / rho[c]);
       vz[c] = 0.5 * (vz0[c] + mz[c] / rho[c]);

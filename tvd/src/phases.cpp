@@ -16,10 +16,11 @@ PhaseLine::PhaseLine(int capacity) {
   const auto nb = static_cast<std::size_t>(capacity) + 4;
   for (auto* a : {&q0, &q1, &w, &ex, &U})
     for (auto& v : *a) v.assign(nb, 0.0);
-  for (auto* v :
-       {&alpha, &vol0, &vol1, &volW, &gm, &gp, &ap, &uL, &uR, &It, &sqrtRho, &pface, &massOld, &damage})
+  for (auto* v : {&alpha, &vol0, &vol1, &volW, &gm, &gp, &ap, &uL, &uR, &It, &sqrtRho, &pface,
+                  &massOld, &damage, &vflux})
     v->assign(nb, 0.0);
   present.assign(nb, 0);
+  virt.assign(nb, 0);
   dry.assign(nb, 0);
   cs.assign(nb, CellState{});
   F.assign(nb, {});

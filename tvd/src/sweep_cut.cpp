@@ -105,7 +105,13 @@ void TvdSolver::sweepCut(int direction, double dt) {
       int a = 0;
       detail::LineSetup setup;
       const int lo = xdir ? 0 : phases_.rowLo, hi = xdir ? N : phases_.rowHi;
-      if (!detail::lineWindow(N, lowSide, highSide, occupied, a, setup, lo, hi)) continue;
+      // One cell beyond the occupied ones on either side: where an interface lies on the
+      // window's end face, the kernel opens that cell to the phase (CutLineSolver::openFaces).
+      auto reach = [&](int pos) {
+        return occupied(pos) || (pos > lo && occupied(pos - 1)) ||
+               (pos + 1 < hi && occupied(pos + 1));
+      };
+      if (!detail::lineWindow(N, lowSide, highSide, reach, a, setup, lo, hi)) continue;
       const int n = setup.n, b = a + n;
 
       // Apertures of the line's own faces, side `side`, as a strided array over the face index
@@ -223,10 +229,15 @@ void TvdSolver::sweepCut(int direction, double dt) {
         double* arrays[4] = {Q.rho.data(), xdir ? Q.mx.data() : Q.mz.data(),
                              xdir ? Q.mz.data() : Q.mx.data(), Q.E.data()};
         double* volume = phases_.volume[static_cast<std::size_t>(p)].data();
+        double* alpha = phases_.alpha[static_cast<std::size_t>(p)].data();
         for (int j = 2; j <= n + 1; ++j) {
           const long c = at(a - 2 + j);
           for (int k = 0; k < 4; ++k) arrays[k][c] = ph.q0[k][j];
           volume[c] = ph.vol0[j];
+          // A cell the kernel opened and the phase entered: occupied for the next sweep (its
+          // part as its fraction) until the marker step measures it.
+          if (ph.virt[j] != 0 && alpha[c] < kPhaseAbsent && ph.q0[detail::kRho][j] != 0.0)
+            alpha[c] = std::max(ph.vol0[j], kPhaseAbsent);
         }
         // docs/strength.md, "TVD with interfaces": the phase's strength state moves with the
         // phase's own mass fluxes (every mass change of the kernel is between cells of the line).

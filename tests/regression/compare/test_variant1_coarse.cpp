@@ -61,10 +61,14 @@ TEST(Variant1Coarse, BothSolversReachTheEndAndCompare) {
                 j["a"]["features"][key].get<double>(), j["b"]["features"][key].get<double>(),
                 d[key].get<double>() / cell);
   // The striker's centroid moves with the striker's momentum, which both methods exchange with
-  // the shield through the same contact pressure; measured to one cell on the common grid by
-  // each side: 2 cells (measured 0.4, 1.5 since the conservative TVD's thin-phase relaxation). Hole and cloud front are printed, not bounded: they are
-  // where the methods differ (docs/figures.md).
-  EXPECT_LE(std::abs(d["striker_centroid_z"].get<double>()), 2.0 * cell + 1e-9);
+  // the shield through the same contact pressure; each side reads it to a cell on the common
+  // grid, and the rest is the methods' discretisation at this spacing. Measured: 0.4 cells, 1.5
+  // since the conservative TVD's thin-phase relaxation, 2.4 (0.073 cm) since the r-z interface
+  // area of full cells was corrected (docs/tvd.md, "The r-z interface area"; TVD 4.565 -> 4.585
+  // cm). The gap closes with resolution: TVD at 0.015 cm 4.508 cm against SPH at 0.01 cm 4.460
+  // (0.048 cm). Bound 3 cells: the coarse gap and half a cell of reading. Hole and cloud front
+  // are printed, not bounded: they are where the methods differ (docs/figures.md).
+  EXPECT_LE(std::abs(d["striker_centroid_z"].get<double>()), 3.0 * cell + 1e-9);
 }
 
 }  // namespace

@@ -74,6 +74,33 @@ TEST(TvdCutCells, ImpactConservesEveryMaterial) {
   }
 }
 
+// r-z: two materials of the same EOS, both compressed to the same pressure (P > 0), filling a
+// closed box around the axis, their contact a cylinder r = 0.213 cm inside a cell column:
+// nothing may move. In a radial sweep a phase's part of a cell feels the face pressures, the hoop
+// source P alpha V / r (P alpha h in line units) and the exchange through its in-cell
+// interface area, which must therefore be alpha h - (r_R g_R - r_L g_L). It was alpha r^2 h - ...
+// (docs/tvd.md, "The r-z interface area"): a full cell then had an interface, and a mixed
+// cell's phases were pushed by P alpha h (1 - r^2) each (max speed 2.8e-4 cm/us after 200 steps).
+TEST(TvdCutCells, CompressedContactAroundTheAxisStaysAtRest) {
+  const double h = 0.05;
+  cases::Scene s = cutScene(0.0, 0.5, 0.0, 0.5, h, Geometry::Axisymmetric);
+  s.domain.boundary = {cases::Boundary::Axis, cases::Boundary::Wall, cases::Boundary::Wall,
+                       cases::Boundary::Wall};
+  s.materials.push_back(material("inner", eos::aluminiumStudy()));
+  s.materials.push_back(material("outer", eos::aluminiumStudy()));
+  const double rho = 1.01 * 2.79;
+  s.bodies.push_back(body("core", 0, cases::Rect{0.0, 0.213, 0.0, 0.5}, {rho, {}, 0.0}));
+  s.bodies.push_back(body("sleeve", 1, cases::Rect{0.213, 0.5, 0.0, 0.5}, {rho, {}, 0.0}));
+  TvdSolver solver(s);
+  const auto m0 = phaseMasses(solver);
+  for (int n = 0; n < 200; ++n) solver.advance(1e9);
+  const auto m1 = phaseMasses(solver);
+  std::printf("  mass change %.3e / %.3e, max speed %.3e\n", m1[0] / m0[0] - 1.0,
+              m1[1] / m0[1] - 1.0, maxSpeed(solver));
+  for (int p = 0; p < 2; ++p) EXPECT_NEAR(m1[p], m0[p], 1e-12 * m0[p]);
+  EXPECT_LT(maxSpeed(solver), 1e-10 * 0.5);  // 1e-10 of aluminium's sound speed (~0.53 cm/us)
+}
+
 // A plate of aluminium resting on one of copper (Mie-Gruneisen), both at P = 0 and at rest,
 // their contact inside a cell row: nothing may move (docs/tvd.md: the closure of the interface
 // areas makes a uniform pressure exert no net force on any phase's part of a cell).
