@@ -110,6 +110,44 @@ TEST(StrengthYield, JohnsonCookByHand) {
   EXPECT_EQ(jc.yield({.plasticStrain = 0.3, .temperature = 2000.0}), 0.0);
 }
 
+TEST(StrengthRate, EquivalentStrainRateByHand) {
+  // sqrt(2/3 e':e') is the axial rate of incompressible uniaxial stress: in r-z, dvz/dz = -2,
+  // dvr/dr = v_r / r = 1 (a rod shortening at 2 /us) gives 2.
+  EXPECT_NEAR(hs::equivalentStrainRate({.xx = 1.0, .zz = -2.0, .hoop = 1.0}), 2.0, 1e-15);
+  // Simple shear dvx/dz = g: e'_xz = e'_zx = g / 2, so sqrt(2/3 * 2 g^2 / 4) = g / sqrt(3).
+  EXPECT_NEAR(hs::equivalentStrainRate({.xz = 0.6}), 0.6 / std::sqrt(3.0), 1e-15);
+  // Uniform compression has no deviatoric part; a rigid rotation none either.
+  EXPECT_EQ(hs::equivalentStrainRate({.xx = -1.0, .zz = -1.0, .hoop = -1.0}), 0.0);
+  EXPECT_EQ(hs::equivalentStrainRate({.xz = 0.7, .zx = -0.7}), 0.0);
+  // The hoop rate alone: e' = (-1/3, -1/3, 2/3), sqrt(2/3 * 6/9) = 2/3.
+  EXPECT_NEAR(hs::equivalentStrainRate({.hoop = 1.0}), 2.0 / 3.0, 1e-15);
+}
+
+TEST(StrengthReturn, PlasticStrainGrowsWithTheAxialStrainInUniaxialStressFlow) {
+  // Incompressible uniaxial stress in r-z at axial rate -1 (dvr/dr = v_r / r = 1/2): on the
+  // yield surface of a perfectly plastic material every step's strain is plastic, and the
+  // radial return's increment (sqrt(3 J2)_trial - Y) / 3G is the axial strain increment dt,
+  // the equivalent strain rate (1) times dt: the Johnson-Cook eps_p is the axial plastic strain
+  // of the tests the constants were fitted to.
+  const double g = 0.46, y = 0.0009, dt = 1e-4;
+  const hs::VelocityGradient grad{.xx = 0.5, .zz = -1.0, .hoop = 0.5};
+  EXPECT_NEAR(hs::equivalentStrainRate(grad), 1.0, 1e-15);
+  hs::Deviator s;
+  double epsp = 0.0;
+  int steps = 0;
+  for (; steps < 400; ++steps) {
+    const hs::Deviator r = hs::jaumannRate(s, grad, g);
+    s.xx += dt * r.xx;
+    s.zz += dt * r.zz;
+    epsp += hs::radialReturn(s, y, g).plasticStrain;
+  }
+  // Elastic until 3 G eps = Y (eps = Y / 3G of axial strain), plastic after: eps_p = eps - Y/3G.
+  EXPECT_NEAR(epsp, steps * dt - y / (3.0 * g), 1e-12);
+  // The deviator is uniaxial compression at the yield stress: s_zz = -2Y/3, s_rr = s_tt = Y/3.
+  EXPECT_NEAR(s.zz, -2.0 / 3.0 * y, 1e-15);
+  EXPECT_NEAR(s.xx, y / 3.0, 1e-15);
+}
+
 TEST(StrengthYield, SteinbergGuinanByHand) {
   // 6061-T6 (Steinberg 1991) at eps_p 0.05, P 10 GPa, eta 1.1, T 500 K:
   // hardening 0.29 (1 + 125 * 0.05)^0.1 = 0.353463 GPa < Ymax;

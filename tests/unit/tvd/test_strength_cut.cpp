@@ -310,12 +310,15 @@ TEST(TvdStrengthCut, UniformTensionAtRestStaysAtRestInRz) {
 // test/taylor_data.hpp): Johnson and Cook's OFHC copper rod at 190 m/s on a rigid frictionless
 // anvil, to 80 us. Shape from the marker line: length = its axial extent, foot = twice its
 // largest radius. Measured: L 1.7353 cm (+7.1 %), foot 1.3538 cm (-0.2 %); D0/40 +6.0 / +4.3 %,
-// D0/60 +6.2 / +5.8 % (docs/strength.md, "TVD Taylor anvil"): the foot within the 5 %
-// here, the length not at any of these spacings (open), so the length is held to 10 %, which the
-// run with the axis defect also met (+1.3 %: the defect showed in the energy and the foot,
-// +11 %). Energy: the ledger closes to 1e-12, and its floors stay below 1e-3 of the impact's
-// energy (measured 5e-6; the axis defect made 0.51); the rod at rest (kinetic energy left
-// 5e-4 of the impact's; bound 1e-2).
+// D0/60 +6.2 / +5.8 % (docs/strength.md, "TVD Taylor anvil"). The foot is held to the issue's
+// 5 %. The length is held to kTaylorLengthBound (8.5 %), not 5 %: the excess is the
+// Johnson-Cook 1983 model's, not the solver's (docs/strength.md, "Why the Taylor rod is long":
+// an independent computation with the same constants gives +7.4 %, mesh independent; no
+// numerical option of either solver moves it; only the constants do), plus the 1 % this
+// solver's length moves between D0/20 and D0/60. The run with the r-z axis defect met the length
+// (+1.3 %); the energy and the foot (+11 %) caught it. Energy: the ledger closes to 1e-12, and
+// its floors stay below 1e-3 of the impact's energy (measured 5e-6; the axis defect made 0.51);
+// the rod at rest (kinetic energy left 5e-4 of the impact's; bound 1e-2).
 TEST(TvdStrengthCut, TaylorAnvilCopper) {
   const cases::Scene s =
       cases::loadScene(cases::test::shippedDir() / "taylor_copper_tvd.toml");
@@ -342,7 +345,45 @@ TEST(TvdStrengthCut, TaylorAnvilCopper) {
   EXPECT_LT(std::abs(solver.ledger().floors.energy), 1e-3 * t0.energy());
   EXPECT_LT(t1.kinetic, 1e-2 * t0.kinetic);
   EXPECT_NEAR(foot / test::kTaylorFootDiameter, 1.0, 0.05);
-  EXPECT_NEAR(length / test::kTaylorFinalLength, 1.0, 0.10);
+  EXPECT_NEAR(length / test::kTaylorFinalLength, 1.0, test::kTaylorLengthBound);
+}
+
+// The same rod at Johnson and Cook's two slower shots, 130 and 146 m/s (test/taylor_data.hpp),
+// with 190 m/s: the length within kTaylorLengthBound of each measurement (measured at D0/20
+// +5.0, +5.4, +7.1 %; D0/40 +4.8, +5.1, +6.0 %: the model's excess at every speed, growing with
+// it), shorter and with a wider foot the faster the shot. The foot is printed, not held, at
+// the slower shots: +8.0 and +7.0 % here, +10.8 and +10.1 % at D0/40, where the measurement's
+// own reading differs by 3.5-3.8 % between the compilation's table and its digitised profile
+// (docs/strength.md, "Why the Taylor rod is long"). The rod at rest at 80 us (bound 1e-2 of the
+// impact's kinetic energy). 4.4 s.
+TEST(TvdStrengthCut, TaylorAnvilCopperAtThreeSpeeds) {
+  double lastLength = 1e300, lastFoot = 0.0;
+  for (const test::TaylorShot& shot : test::kTaylorShots) {
+    cases::Scene s = cases::loadScene(cases::test::shippedDir() / "taylor_copper_tvd.toml");
+    s.bodies[0].velocity = {0.0, -shot.speed};
+    TvdSolver solver(s);
+    const Totals t0 = solver.totals();
+    runTo(solver, s.tEnd);
+    const Totals t1 = solver.totals();
+    double zmin = 1e300, zmax = -1e300, rmax = 0.0;
+    for (const auto& line : solver.markers().lines())
+      for (const Vec2& p : line.points) {
+        zmin = std::min(zmin, p.z);
+        zmax = std::max(zmax, p.z);
+        rmax = std::max(rmax, p.x);
+      }
+    const double length = zmax - zmin, foot = 2.0 * rmax;
+    std::printf(
+        "TVD Taylor anvil, D0/20, %.0f m/s: L = %.4f cm (%+.1f %%), foot %.4f cm (%+.1f %%)\n",
+        shot.speed * 1e4, length, 100.0 * (length / shot.length - 1.0), foot,
+        100.0 * (foot / shot.foot - 1.0));
+    EXPECT_NEAR(length / shot.length, 1.0, test::kTaylorLengthBound) << shot.speed;
+    EXPECT_LT(t1.kinetic, 1e-2 * t0.kinetic) << shot.speed;
+    EXPECT_LT(length, lastLength) << shot.speed;
+    EXPECT_GT(foot, lastFoot) << shot.speed;
+    lastLength = length;
+    lastFoot = foot;
+  }
 }
 
 TEST(TvdStrengthCut, TotalEnergyIsConserved) { checkEnergy(Geometry::Planar); }
