@@ -428,7 +428,11 @@ class CutLineSolver {
         m[p] = 0.0;
         if (!ph.active || !ph.present[j]) continue;
         const double r = judged(ph, kRho, j, first);
-        if (!(r > 0.0)) continue;
+        // A part the stage moved out (negative working volume: an edge left the cell, and what
+        // is left is round-off mass next to momentum that is not) has no velocity to relax:
+        // pooled, its momentum over its mass gave the cell a common velocity of 1e10 cm/us and
+        // its phases energies of +-1e3 (variant 1 at 0.0075 cm, docs/tvd.md "Robustness").
+        if (!(r > 0.0) || !(judgedVolume(ph, j, first) > 0.0)) continue;
         m[p] = r;
         ++held;
         const double c = ph.cs[j].c;
