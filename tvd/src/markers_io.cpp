@@ -18,7 +18,8 @@ namespace hvi::tvd {
 namespace {
 
 constexpr std::array<char, 8> kMagic{'H', 'V', 'I', 'M', 'R', 'K', '0', '1'};
-constexpr std::uint32_t kVersion = 1;
+// Version 2: each line's spacing scale (MarkerLine::scale); version 1 (none) is read as 1.
+constexpr std::uint32_t kVersion = 2;
 
 }  // namespace
 
@@ -62,6 +63,7 @@ void MarkerSet::write(std::ostream& os) const {
   for (const auto& l : lines_) {
     w.value(static_cast<std::int32_t>(l.object));
     w.value(static_cast<std::uint8_t>(l.closed ? 1 : 0));
+    w.value(l.scale);
     w.array(l.points);
   }
 }
@@ -71,9 +73,10 @@ void MarkerSet::read(std::istream& is) {
   std::array<char, 8> magic{};
   r.bytes(magic.data(), magic.size(), "the magic");
   if (magic != kMagic) throw InputError("marker checkpoint: not a marker-set record");
-  if (const auto v = r.value<std::uint32_t>(); v != kVersion)
+  const auto version = r.value<std::uint32_t>();
+  if (version != kVersion && version != 1)
     throw InputError(
-        fmt::format("marker checkpoint: version {} (this build reads {})", v, kVersion));
+        fmt::format("marker checkpoint: version {} (this build reads 1 and {})", version, kVersion));
   MarkerSet s;
   const auto geom = r.value<std::int32_t>();
   s.objects_ = r.value<std::int32_t>();
@@ -90,6 +93,9 @@ void MarkerSet::read(std::istream& is) {
   for (auto& l : s.lines_) {
     l.object = r.value<std::int32_t>();
     l.closed = r.value<std::uint8_t>() != 0;
+    l.scale = version >= 2 ? r.value<double>() : 1.0;
+    if (!(l.scale >= 1.0) || !(l.scale <= 1024.0))
+      throw InputError("marker checkpoint: corrupt line scale");
     const auto n = r.count();
     if (n > kLimit || l.object < 0 || l.object >= s.objects_)
       throw InputError("marker checkpoint: corrupt line record");

@@ -120,12 +120,13 @@ void MarkerSet::redistribute(const GridSpec& grid) {
   std::size_t kept = 0;
   for (std::size_t l = 0; l < lines_.size(); ++l) {
     MarkerLine& line = lines_[l];
+    const double s = line.scale;
     // Split first, so a collapse sees near neighbours (the end of a filament thinner than the
     // minimum spacing then loses at most a sliver of max spacing by its width), collapse, and
     // split again where a collapse lengthened a neighbouring edge beyond maxLen.
-    splitLong(line.points, scratchPoints_, h, minLen, maxLen);
-    removeShort(scratchPoints_, minLen, rz);
-    splitLong(scratchPoints_, line.points, h, minLen, maxLen);
+    splitLong(line.points, scratchPoints_, s * h, s * minLen, s * maxLen);
+    removeShort(scratchPoints_, s * minLen, rz);
+    splitLong(scratchPoints_, line.points, s * h, s * minLen, s * maxLen);
     // A speck below the grid scale can never own a cell; dropping it keeps the count bounded.
     bool speck = line.points.size() < 3;
     if (!speck) {
@@ -146,35 +147,69 @@ void MarkerSet::redistribute(const GridSpec& grid) {
   lines_.resize(kept);
 }
 
-// Lines stretch, and the redistribution fills them with points at the marker spacing; a line
-// that would need more than kMaxPointsPerCell points per grid cell (plus a fixed allowance for
-// small grids) is no longer a material boundary: a body's lines hold of the order of its
-// perimeter in cells over the spacing, far fewer than the cells. Such growth comes from a
-// velocity field that flings markers across the grid, so the run stops with a diagnostic
-// before the points are made (a shield run at 0.042 cm cells once filled its memory so).
-void MarkerSet::checkGrowth(const GridSpec& grid, double h, double minLen, double maxLen) const {
+// Lines stretch, and the redistribution fills them with points at the marker spacing. A body's
+// lines hold of the order of its perimeter in cells over the spacing, far fewer than the cells;
+// a line that would need more than kMaxPointsPerCell points per grid cell in all has been
+// stretched into a tangle by the flow it follows (a debris cloud's spray: the Whipple shield's
+// projectile line at 0.042 cm cells grew from 4 978 points at 23 us to 535 349 at 32.5 us). Such
+// a line is coarsened instead of filling the memory: its spacings are doubled (the collapse of
+// short edges keeps the volume it encloses, so the phase keeps its volume and mass; what is lost
+// is the shape below the new spacing, of a tangle the grid does not resolve anyway), longest
+// lines first, until the total is under half the budget, each line at most to kMaxScale times
+// the set's spacing. A run whose lines cannot be brought under the budget so stops with a
+// diagnostic before the points are made (a shield run once filled its memory).
+void MarkerSet::checkGrowth(const GridSpec& grid, double h, double minLen, double maxLen) {
   constexpr std::size_t kMaxPointsPerCell = 16, kAllowance = std::size_t{1} << 16;
+  constexpr double kMaxScale = 64.0;
   const std::size_t limit = kMaxPointsPerCell * static_cast<std::size_t>(grid.cells()) + kAllowance;
-  std::size_t total = 0, most = 0;
-  const MarkerLine* longest = nullptr;
-  for (const auto& l : lines_) {
-    const std::size_t n = splitCount(l.points, h, minLen, maxLen);
-    total += n;
-    if (n >= most) {
+  auto count = [&](const MarkerLine& l) {
+    return splitCount(l.points, l.scale * h, l.scale * minLen, l.scale * maxLen);
+  };
+  std::size_t total = 0;
+  for (const auto& l : lines_) total += count(l);
+  if (total <= limit) return;
+  // Coarsen the line with the most points, again and again, until under half the budget.
+  while (total > limit / 2) {
+    MarkerLine* longest = nullptr;
+    std::size_t most = 0;
+    for (auto& l : lines_) {
+      if (!(l.scale < kMaxScale)) continue;
+      const std::size_t n = count(l);
+      if (n >= most) {
+        most = n;
+        longest = &l;
+      }
+    }
+    if (longest == nullptr || most == 0) break;
+    longest->scale *= 2.0;
+    ++coarsenings_;
+    total = total - most + count(*longest);
+  }
+  if (total <= limit) return;
+  const MarkerLine* longest = &lines_.front();
+  std::size_t most = 0;
+  for (const auto& l : lines_)
+    if (const std::size_t n = count(l); n >= most) {
       most = n;
       longest = &l;
     }
-  }
-  if (total <= limit) return;
   auto [xl, xh] = std::minmax_element(longest->points.begin(), longest->points.end(),
                                       [](Vec2 u, Vec2 v) { return u.x < v.x; });
   auto [zl, zh] = std::minmax_element(longest->points.begin(), longest->points.end(),
                                       [](Vec2 u, Vec2 v) { return u.z < v.z; });
   throw SimulationError(fmt::format(
-      "tvd: the marker lines would need {} points, more than {} per grid cell ({} cells): a line "
-      "is stretched without bound by the velocity field; the longest (object {}) would need {} "
-      "points and spans x = [{:.6g}, {:.6g}], z = [{:.6g}, {:.6g}] cm",
-      total, kMaxPointsPerCell, grid.cells(), longest->object, most, xl->x, xh->x, zl->z, zh->z));
+      "tvd: the marker lines would need {} points, more than {} per grid cell ({} cells), even "
+      "with the longest lines coarsened to {} times the marker spacing: a line is stretched "
+      "without bound by the velocity field; the longest (object {}) would need {} points and "
+      "spans x = [{:.6g}, {:.6g}], z = [{:.6g}, {:.6g}] cm",
+      total, kMaxPointsPerCell, grid.cells(), kMaxScale, longest->object, most, xl->x, xh->x,
+      zl->z, zh->z));
+}
+
+double MarkerSet::largestScale() const {
+  double s = 1.0;
+  for (const auto& l : lines_) s = std::max(s, l.scale);
+  return s;
 }
 
 }  // namespace hvi::tvd

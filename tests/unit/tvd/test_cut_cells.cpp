@@ -302,8 +302,8 @@ TEST(TvdCutCells, RestartIsBitForBit) {
 // vacuum around a disk at rest holds 1e-20 g/cm^3 moving up at 10^6 cm/us (a cloud of round-off
 // mass): every marker must stay within one cell of the disk (the centred velocity is at most
 // half of the clamp; the bilinear interpolation and the extension into vacuum never exceed
-// their samples). Without the clamp the top of the disk moved 5000 cm, which the redistribution
-// refuses (MarkerSet::checkGrowth).
+// their samples). Without the clamp the top of the disk moved 5000 cm, a line the redistribution
+// could not hold (MarkerSet::checkGrowth).
 TEST(TvdCutCells, RoundOffMassDoesNotFlingTheMarkerLines) {
   const double h = 0.05, R = 0.4;
   cases::Scene s = cutScene(-1.0, 1.0, -1.0, 1.0, h);

@@ -21,6 +21,9 @@ struct MarkerLine {
   int object = -1;
   bool closed = true;
   std::vector<Vec2> points;  //!< cm
+  //! The line's spacings (marker, minimum, maximum) in units of the set's: 1, or a power of 2
+  //! once the line outgrew the point budget (MarkerSet::checkGrowth coarsens it).
+  double scale = 1.0;
 };
 
 //! Wetted fraction ("aperture") of every cell face by every object, for the conservative
@@ -114,6 +117,11 @@ class MarkerSet {
   //! Changes the redistribution bounds, in cells. Requires 0 < minCells, 2*minCells <= maxCells.
   void setSpacingBounds(double minCells, double maxCells);
   void setTinyLoopCells(double cells) { tinyLoopCells_ = cells; }
+  //! How many times a line was coarsened since construction (checkGrowth; kept in checkpoints
+  //! through the lines' scales, not this count).
+  long coarsenings() const { return coarsenings_; }
+  //! The largest scale of any line (1: none coarsened).
+  double largestScale() const;
 
   //! owner[c] = object covering the largest part of cell c, -1 if vacuum covers more than any
   //! object (vacuum is a candidate; ties go to the object, and between objects to the lower
@@ -169,9 +177,11 @@ class MarkerSet {
   void read(std::istream&);         //!< throws InputError if the stream is not a MarkerSet
 
  private:
-  //! Throws SimulationError if the redistribution (spacing h within [minLen, maxLen]) would
-  //! give the lines more than a few points per grid cell.
-  void checkGrowth(const GridSpec& grid, double h, double minLen, double maxLen) const;
+  //! Where the redistribution (spacing h within [minLen, maxLen], times each line's scale)
+  //! would give the lines more than kMaxPointsPerCell points per grid cell, coarsens the
+  //! longest lines (their scale doubled, up to kMaxScale) until the total is back under half of
+  //! it; throws SimulationError if that cannot be done.
+  void checkGrowth(const GridSpec& grid, double h, double minLen, double maxLen);
   //! `normal` null: no normals (and no marker lengths); `fraction` null: no fractions, else
   //! one array per object.
   void rasterizeInto(const GridSpec& grid, std::vector<int>& owner, std::vector<Vec2>* normal,
@@ -185,6 +195,7 @@ class MarkerSet {
   double minCells_ = 0.25;
   double maxCells_ = 1.0;
   double tinyLoopCells_ = 0.05;
+  long coarsenings_ = 0;
 
   // Scratch reused between calls so that the per-step calls do not allocate.
   mutable std::vector<double> acc_;    // per-object coverage accumulation over its bounding box
