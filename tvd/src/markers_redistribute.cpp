@@ -162,8 +162,17 @@ void MarkerSet::checkGrowth(const GridSpec& grid, double h, double minLen, doubl
   constexpr std::size_t kMaxPointsPerCell = 16, kAllowance = std::size_t{1} << 16;
   constexpr double kMaxScale = 64.0;
   const std::size_t limit = kMaxPointsPerCell * static_cast<std::size_t>(grid.cells()) + kAllowance;
+  // What a line will hold after the redistribution at its scale: at most what the splits make
+  // of its present points, and at most its perimeter over the minimum spacing (every edge the
+  // collapse leaves is at least that long). A line already stretched holds its points now;
+  // only the second bound falls when its spacing grows.
   auto count = [&](const MarkerLine& l) {
-    return splitCount(l.points, l.scale * h, l.scale * minLen, l.scale * maxLen);
+    const std::size_t split = splitCount(l.points, l.scale * h, l.scale * minLen, l.scale * maxLen);
+    double perimeter = 0.0;
+    const std::size_t n = l.points.size();
+    for (std::size_t i = 0; i < n; ++i) perimeter += norm(l.points[i + 1 == n ? 0 : i + 1] - l.points[i]);
+    const double bound = std::ceil(perimeter / (l.scale * minLen)) + 3.0;
+    return bound < static_cast<double>(split) ? static_cast<std::size_t>(bound) : split;
   };
   std::size_t total = 0;
   for (const auto& l : lines_) total += count(l);
