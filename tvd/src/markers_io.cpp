@@ -75,8 +75,8 @@ void MarkerSet::read(std::istream& is) {
   if (magic != kMagic) throw InputError("marker checkpoint: not a marker-set record");
   const auto version = r.value<std::uint32_t>();
   if (version != kVersion && version != 1)
-    throw InputError(
-        fmt::format("marker checkpoint: version {} (this build reads 1 and {})", version, kVersion));
+    throw InputError(fmt::format("marker checkpoint: version {} (this build reads 1 and {})",
+                                 version, kVersion));
   MarkerSet s;
   const auto geom = r.value<std::int32_t>();
   s.objects_ = r.value<std::int32_t>();

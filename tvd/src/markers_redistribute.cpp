@@ -170,7 +170,8 @@ void MarkerSet::checkGrowth(const GridSpec& grid, double h, double minLen, doubl
     const std::size_t split = splitCount(l.points, l.scale * h, l.scale * minLen, l.scale * maxLen);
     double perimeter = 0.0;
     const std::size_t n = l.points.size();
-    for (std::size_t i = 0; i < n; ++i) perimeter += norm(l.points[i + 1 == n ? 0 : i + 1] - l.points[i]);
+    for (std::size_t i = 0; i < n; ++i)
+      perimeter += norm(l.points[i + 1 == n ? 0 : i + 1] - l.points[i]);
     const double bound = std::ceil(perimeter / (l.scale * minLen)) + 3.0;
     return bound < static_cast<double>(split) ? static_cast<std::size_t>(bound) : split;
   };
@@ -211,8 +212,8 @@ void MarkerSet::checkGrowth(const GridSpec& grid, double h, double minLen, doubl
       "with the longest lines coarsened to {} times the marker spacing: a line is stretched "
       "without bound by the velocity field; the longest (object {}) would need {} points and "
       "spans x = [{:.6g}, {:.6g}], z = [{:.6g}, {:.6g}] cm",
-      total, kMaxPointsPerCell, grid.cells(), kMaxScale, longest->object, most, xl->x, xh->x,
-      zl->z, zh->z));
+      total, kMaxPointsPerCell, grid.cells(), kMaxScale, longest->object, most, xl->x, xh->x, zl->z,
+      zh->z));
 }
 
 double MarkerSet::largestScale() const {
