@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hvi/cases/effects.hpp"
@@ -306,6 +307,19 @@ TEST(TvdStrengthCut, UniformTensionAtRestStaysAtRestInRz) {
   EXPECT_LT(vmax, 1e-10 * soundSpeed(cu.eos));
 }
 
+// The rod's shape from its marker line: length = its axial extent, foot = twice its largest
+// radius.
+std::pair<double, double> rodShape(const TvdSolver& solver) {
+  double zmin = 1e300, zmax = -1e300, rmax = 0.0;
+  for (const auto& line : solver.markers().lines())
+    for (const Vec2& p : line.points) {
+      zmin = std::min(zmin, p.z);
+      zmax = std::max(zmax, p.z);
+      rmax = std::max(rmax, p.x);
+    }
+  return {zmax - zmin, 2.0 * rmax};
+}
+
 // The Taylor anvil in TVD (cases/scenes/taylor_copper_tvd.toml, D0/20; the measurement in
 // test/taylor_data.hpp): Johnson and Cook's OFHC copper rod at 190 m/s on a rigid frictionless
 // anvil, to 80 us. Shape from the marker line: length = its axial extent, foot = twice its
@@ -328,14 +342,7 @@ TEST(TvdStrengthCut, TaylorAnvilCopper) {
   runTo(solver, s.tEnd);
   const Totals t1 = solver.totals();
   const Budget led = solver.ledger().sum();
-  double zmin = 1e300, zmax = -1e300, rmax = 0.0;
-  for (const auto& line : solver.markers().lines())
-    for (const Vec2& p : line.points) {
-      zmin = std::min(zmin, p.z);
-      zmax = std::max(zmax, p.z);
-      rmax = std::max(rmax, p.x);
-    }
-  const double length = zmax - zmin, foot = 2.0 * rmax;
+  const auto [length, foot] = rodShape(solver);
   std::printf(
       "TVD Taylor anvil, D0/20, %ld steps: L = %.4f cm (%+.1f %%), foot %.4f cm (%+.1f %%), "
       "floors %.1e, kinetic energy left %.1e\n",
@@ -366,14 +373,7 @@ TEST(TvdStrengthCut, TaylorAnvilCopperAtThreeSpeeds) {
     const Totals t0 = solver.totals();
     runTo(solver, s.tEnd);
     const Totals t1 = solver.totals();
-    double zmin = 1e300, zmax = -1e300, rmax = 0.0;
-    for (const auto& line : solver.markers().lines())
-      for (const Vec2& p : line.points) {
-        zmin = std::min(zmin, p.z);
-        zmax = std::max(zmax, p.z);
-        rmax = std::max(rmax, p.x);
-      }
-    const double length = zmax - zmin, foot = 2.0 * rmax;
+    const auto [length, foot] = rodShape(solver);
     std::printf(
         "TVD Taylor anvil, D0/20, %.0f m/s: L = %.4f cm (%+.1f %%), foot %.4f cm (%+.1f %%)\n",
         shot.speed * 1e4, length, 100.0 * (length / shot.length - 1.0), foot,
