@@ -94,7 +94,7 @@ void MarkerSet::read(std::istream& is) {
     l.object = r.value<std::int32_t>();
     l.closed = r.value<std::uint8_t>() != 0;
     l.scale = version >= 2 ? r.value<double>() : 1.0;
-    if (!(l.scale >= 1.0) || !(l.scale <= 1024.0))
+    if (!(l.scale >= 1.0) || !(l.scale <= kMaxLineScale))
       throw InputError("marker checkpoint: corrupt line scale");
     const auto n = r.count();
     if (n > kLimit || l.object < 0 || l.object >= s.objects_)

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "hvi/common/error.hpp"
 
@@ -155,65 +156,68 @@ void MarkerSet::redistribute(const GridSpec& grid) {
 // a line is coarsened instead of filling the memory: its spacings are doubled (the collapse of
 // short edges keeps the volume it encloses, so the phase keeps its volume and mass; what is lost
 // is the shape below the new spacing, of a tangle the grid does not resolve anyway), longest
-// lines first, until the total is under half the budget, each line at most to kMaxScale times
+// lines first, until the total is under half the budget, each line at most to kMaxLineScale times
 // the set's spacing. A run whose lines cannot be brought under the budget so stops with a
 // diagnostic before the points are made (a shield run once filled its memory).
 void MarkerSet::checkGrowth(const GridSpec& grid, double h, double minLen, double maxLen) {
   constexpr std::size_t kMaxPointsPerCell = 16, kAllowance = std::size_t{1} << 16;
-  constexpr double kMaxScale = 64.0;
   const std::size_t limit = kMaxPointsPerCell * static_cast<std::size_t>(grid.cells()) + kAllowance;
-  // What a line will hold after the redistribution at its scale: at most what the splits make
-  // of its present points, and at most its perimeter over the minimum spacing (every edge the
-  // collapse leaves is at least that long). A line already stretched holds its points now;
-  // only the second bound falls when its spacing grows.
-  auto count = [&](const MarkerLine& l) {
-    const std::size_t split = splitCount(l.points, l.scale * h, l.scale * minLen, l.scale * maxLen);
-    double perimeter = 0.0;
-    const std::size_t n = l.points.size();
-    for (std::size_t i = 0; i < n; ++i)
-      perimeter += norm(l.points[i + 1 == n ? 0 : i + 1] - l.points[i]);
-    const double bound = std::ceil(perimeter / (l.scale * minLen)) + 3.0;
-    return bound < static_cast<double>(split) ? static_cast<std::size_t>(bound) : split;
+  auto split = [&](const MarkerLine& l) {
+    return splitCount(l.points, l.scale * h, l.scale * minLen, l.scale * maxLen);
   };
+  // Every step: what the splits make of the present points bounds what the redistribution
+  // holds after it.
   std::size_t total = 0;
-  for (const auto& l : lines_) total += count(l);
+  for (const auto& l : lines_) total += split(l);
+  if (total <= limit) return;
+  // Over the budget: a line already stretched holds its points now, and only its perimeter over
+  // the minimum spacing (every edge the collapse leaves is at least that long) falls when its
+  // spacing grows. Each line's count is the smaller of the two, computed once, and again only
+  // for the line coarsened.
+  std::vector<double> perimeter(lines_.size(), 0.0);
+  std::vector<std::size_t> count(lines_.size());
+  auto recount = [&](std::size_t i) {
+    const double bound = std::ceil(perimeter[i] / (lines_[i].scale * minLen)) + 3.0;
+    const std::size_t n = split(lines_[i]);
+    count[i] = bound < static_cast<double>(n) ? static_cast<std::size_t>(bound) : n;
+  };
+  total = 0;
+  for (std::size_t i = 0; i < lines_.size(); ++i) {
+    const auto& p = lines_[i].points;
+    for (std::size_t j = 0; j < p.size(); ++j)
+      perimeter[i] += norm(p[j + 1 == p.size() ? 0 : j + 1] - p[j]);
+    recount(i);
+    total += count[i];
+  }
   if (total <= limit) return;
   // Coarsen the line with the most points, again and again, until under half the budget.
   while (total > limit / 2) {
-    MarkerLine* longest = nullptr;
-    std::size_t most = 0;
-    for (auto& l : lines_) {
-      if (!(l.scale < kMaxScale)) continue;
-      const std::size_t n = count(l);
-      if (n >= most) {
-        most = n;
-        longest = &l;
-      }
-    }
-    if (longest == nullptr || most == 0) break;
-    longest->scale *= 2.0;
+    std::size_t longest = lines_.size();
+    for (std::size_t i = 0; i < lines_.size(); ++i)
+      if (lines_[i].scale < kMaxLineScale &&
+          (longest == lines_.size() || count[i] >= count[longest]))
+        longest = i;
+    if (longest == lines_.size() || count[longest] == 0) break;
+    lines_[longest].scale *= 2.0;
     ++coarsenings_;
-    total = total - most + count(*longest);
+    total -= count[longest];
+    recount(longest);
+    total += count[longest];
   }
   if (total <= limit) return;
-  const MarkerLine* longest = &lines_.front();
-  std::size_t most = 0;
-  for (const auto& l : lines_)
-    if (const std::size_t n = count(l); n >= most) {
-      most = n;
-      longest = &l;
-    }
-  auto [xl, xh] = std::minmax_element(longest->points.begin(), longest->points.end(),
+  const auto most = std::max_element(count.begin(), count.end());
+  const MarkerLine& longest = lines_[static_cast<std::size_t>(most - count.begin())];
+  auto [xl, xh] = std::minmax_element(longest.points.begin(), longest.points.end(),
                                       [](Vec2 u, Vec2 v) { return u.x < v.x; });
-  auto [zl, zh] = std::minmax_element(longest->points.begin(), longest->points.end(),
+  auto [zl, zh] = std::minmax_element(longest.points.begin(), longest.points.end(),
                                       [](Vec2 u, Vec2 v) { return u.z < v.z; });
   throw SimulationError(fmt::format(
       "tvd: the marker lines would need {} points, more than {} per grid cell ({} cells), even "
       "with the longest lines coarsened to {} times the marker spacing: a line is stretched "
       "without bound by the velocity field; the longest (object {}) would need {} points and "
       "spans x = [{:.6g}, {:.6g}], z = [{:.6g}, {:.6g}] cm",
-      total, kMaxPointsPerCell, grid.cells(), kMaxScale, longest->object, most, xl->x, xh->x, zl->z,
-      zh->z));
+      total, kMaxPointsPerCell, grid.cells(), kMaxLineScale, longest.object, *most, xl->x, xh->x,
+      zl->z, zh->z));
 }
 
 double MarkerSet::largestScale() const {

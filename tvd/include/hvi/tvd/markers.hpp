@@ -122,6 +122,9 @@ class MarkerSet {
   long coarsenings() const { return coarsenings_; }
   //! The largest scale of any line (1: none coarsened).
   double largestScale() const;
+  //! The most a line's spacings are coarsened (checkGrowth; a checkpoint's scale beyond it is
+  //! corrupt).
+  static constexpr double kMaxLineScale = 64.0;
 
   //! owner[c] = object covering the largest part of cell c, -1 if vacuum covers more than any
   //! object (vacuum is a candidate; ties go to the object, and between objects to the lower
@@ -179,7 +182,7 @@ class MarkerSet {
  private:
   //! Where the redistribution (spacing h within [minLen, maxLen], times each line's scale)
   //! would give the lines more than kMaxPointsPerCell points per grid cell, coarsens the
-  //! longest lines (their scale doubled, up to kMaxScale) until the total is back under half of
+  //! longest lines (their scale doubled, up to kMaxLineScale) until the total is back under half of
   //! it; throws SimulationError if that cannot be done.
   void checkGrowth(const GridSpec& grid, double h, double minLen, double maxLen);
   //! `normal` null: no normals (and no marker lengths); `fraction` null: no fractions, else
