@@ -590,6 +590,7 @@ class CutLineSolver {
       }
       if (!short_) break;
     }
+    settleAbsorbed(ph);
   }
 
   // The stage's result must be physical where the cell is live: a state the fallback and the
@@ -738,6 +739,25 @@ class CutLineSolver {
       ph.volW[t] += ph.volW[j] * vj / vt;
       ph.volW[j] = 0.0;
       ph.dry[f] = 1;
+      ph.into[j] = t;
+    }
+  }
+  // What the positivity limiter moved through the faces of a cell absorbFading emptied belongs
+  // to the cell that absorbed it (the edge now lies there). The limiter scales a chain of faces
+  // by their mass flux alone, so left in the emptied cell it was round-off mass beside momentum
+  // and energy that are not: a state of no volume, which closeFading then handed to a neighbour
+  // as empty as itself, at 1e10 cm/us (variant 1 at 0.0075 cm, step 4324; docs/tvd.md
+  // "Robustness"). Moved as absorbFading moves, exactly conservative.
+  void settleAbsorbed(PhaseLine& ph) {
+    for (int j = 2; j <= n_ + 1; ++j) {
+      const int t = ph.into[j];
+      if (t < 0) continue;
+      ph.into[j] = -1;
+      const double vj = 1.0 / W_.invVol[j], vt = 1.0 / W_.invVol[t];
+      for (int k = 0; k < 4; ++k) {
+        ph.w[k][t] += ph.w[k][j] * vj / vt;
+        ph.w[k][j] = 0.0;
+      }
     }
   }
   // A cell whose working part has faded below kLiveFraction of its fraction (an edge leaving

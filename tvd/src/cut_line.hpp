@@ -34,6 +34,7 @@ struct PhaseLine {
   std::vector<signed char> virt;
   std::vector<double> vflux;
   std::vector<unsigned char> dry;  // faces a trailing edge crossed in this stage
+  std::vector<int> into;  // the cell absorbFading handed this cell's content to, or -1
   std::vector<CellState> cs;
   std::vector<double> sqrtRho;
   std::vector<std::array<double, 4>> F, flux;

@@ -22,6 +22,7 @@ PhaseLine::PhaseLine(int capacity) {
   present.assign(nb, 0);
   virt.assign(nb, 0);
   dry.assign(nb, 0);
+  into.assign(nb, -1);
   cs.assign(nb, CellState{});
   F.assign(nb, {});
   flux.assign(nb, {});
