@@ -36,7 +36,7 @@ using strength::Material;
 #define HVI_NONNEGATIVE .ok = [](double v) { return v >= 0.0; }, .problem = "must be >= 0"
 
 constexpr int kConstant = 0, kJc = 1, kSg = 2, kZa = 3;  // strength::YieldModel's order
-constexpr int kGradyKipp = 1, kJcFailure = 2;   // strength::DamageModel's order
+constexpr int kGradyKipp = 1, kJcFailure = 2;            // strength::DamageModel's order
 
 constexpr std::array<KeyRow<Material>, 31> kStrength{{
     {.key = "preset",

@@ -81,9 +81,9 @@ TEST(SphStrengthStudy, TaylorAnvilCopperWithSwitchAndPlasticRate) {
 // falling with dx, and at D0/40 the length and the foot within the 5 % and the rod at
 // rest (1e-2).
 TEST(SphStrengthStudy, TaylorAnvilCopperZerilliArmstrongWithSwitchAndPlasticRate) {
-  const std::vector<std::string> options = {
-      "materials.copper.strength.preset=\"copper_ofhc_za\"",
-      "sph.viscosity_switch=\"morris_monaghan\"", "sph.yield_strain_rate=\"plastic\""};
+  const std::vector<std::string> options = {"materials.copper.strength.preset=\"copper_ofhc_za\"",
+                                            "sph.viscosity_switch=\"morris_monaghan\"",
+                                            "sph.yield_strain_rate=\"plastic\""};
   double previous = 1e300;
   for (double dx : {0.0254, 0.01905}) {
     const test::TaylorShape t = test::taylorAnvil(dx, options);

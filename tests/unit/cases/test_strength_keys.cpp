@@ -69,8 +69,8 @@ weibull_m = 9
 }
 
 TEST(StrengthKeys, ToTomlReadsBackToTheSameValues) {
-  for (const char* preset : {"al6061_t6", "al2017_t4", "al2024_t3", "copper_ofhc",
-                             "copper_ofhc_za", "steel_4340", "tungsten"}) {
+  for (const char* preset : {"al6061_t6", "al2017_t4", "al2024_t3", "copper_ofhc", "copper_ofhc_za",
+                             "steel_4340", "tungsten"}) {
     const Scene a = parseScene(
         plateScene(std::string("\n[materials.al.strength]\npreset = \"") + preset + "\"\n"),
         "s.toml");
@@ -132,12 +132,11 @@ za_melt_temperature = 1356
 )"));
   EXPECT_TRUE(contains(e, "za_c4")) << e;
   // Out of range, with what is allowed.
-  e = errorOf(
-      plateScene("\n[materials.al.strength]\npreset = \"copper_ofhc_za\"\nza_c3 = -0.1\n"));
+  e = errorOf(plateScene("\n[materials.al.strength]\npreset = \"copper_ofhc_za\"\nza_c3 = -0.1\n"));
   EXPECT_TRUE(contains(e, "za_c3")) << e;
   EXPECT_TRUE(contains(e, "must be >= 0")) << e;
-  e = errorOf(plateScene(
-      "\n[materials.al.strength]\npreset = \"copper_ofhc_za\"\nza_c0 = \"-1 MPa\"\n"));
+  e = errorOf(
+      plateScene("\n[materials.al.strength]\npreset = \"copper_ofhc_za\"\nza_c0 = \"-1 MPa\"\n"));
   EXPECT_TRUE(contains(e, "za_c0")) << e;
   EXPECT_TRUE(contains(e, "must be >= 0")) << e;
   e = errorOf(plateScene(
@@ -153,7 +152,8 @@ za_melt_temperature = 1356
       plateScene("\n[materials.al.strength]\npreset = \"copper_ofhc_za\"\njc_a = \"1 GPa\"\n"));
   EXPECT_TRUE(contains(e, "jc_a")) << e;
   EXPECT_TRUE(contains(e, "not a parameter of model = \"zerilli_armstrong\"")) << e;
-  e = errorOf(plateScene("\n[materials.al.strength]\npreset = \"copper_ofhc\"\nza_c0 = \"1 MPa\"\n"));
+  e = errorOf(
+      plateScene("\n[materials.al.strength]\npreset = \"copper_ofhc\"\nza_c0 = \"1 MPa\"\n"));
   EXPECT_TRUE(contains(e, "za_c0")) << e;
   EXPECT_TRUE(contains(e, "not a parameter of model = \"johnson_cook\"")) << e;
   // The model's name among the allowed ones.

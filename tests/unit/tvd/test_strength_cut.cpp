@@ -392,9 +392,9 @@ TEST(TvdStrengthCut, TaylorAnvilCopperAtThreeSpeeds) {
 // docs/strength.md, "Zerilli-Armstrong copper") instead of Johnson and Cook's: the yield law is
 // the only difference.
 cases::Scene zerilliArmstrongTaylor(const std::string& cellSize) {
-  return cases::loadScene(cases::test::shippedDir() / "taylor_copper_tvd.toml",
-                          {"tvd.cell_size=" + cellSize,
-                           "materials.copper.strength.preset=\"copper_ofhc_za\""});
+  return cases::loadScene(
+      cases::test::shippedDir() / "taylor_copper_tvd.toml",
+      {"tvd.cell_size=" + cellSize, "materials.copper.strength.preset=\"copper_ofhc_za\""});
 }
 
 // Issue 15's criterion met: at 190 m/s the Zerilli-Armstrong rod's length and foot are both

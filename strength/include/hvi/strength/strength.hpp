@@ -141,9 +141,9 @@ struct SteinbergGuinan {
 //! below the rate the constants' unit names, and no ln 0 at rest. The law has no melt of its own
 //! (it only decays with T), so Y = 0 at or above T_melt, a material constant as Johnson-Cook's.
 struct ZerilliArmstrong {
-  double c0 = 0.0, c2 = 0.0;       //!< athermal stress and hardening coefficient, Mbar
-  double c3 = 0.0, c4 = 0.0;       //!< 1/K
-  double meltTemperature = 1.0e4;  //!< K
+  double c0 = 0.0, c2 = 0.0;                  //!< athermal stress and hardening coefficient, Mbar
+  double c3 = 0.0, c4 = 0.0;                  //!< 1/K
+  double meltTemperature = 1.0e4;             //!< K
   static constexpr double kPerSecond = 1e-6;  //!< 1/s in 1/us: the constants' rate unit
   [[nodiscard]] double yield(const YieldInput& in) const {
     if (in.temperature >= meltTemperature) return 0.0;
