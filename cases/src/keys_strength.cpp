@@ -35,20 +35,21 @@ using strength::Material;
 #define HVI_POSITIVE .ok = [](double v) { return v > 0.0; }, .problem = "must be > 0"
 #define HVI_NONNEGATIVE .ok = [](double v) { return v >= 0.0; }, .problem = "must be >= 0"
 
-constexpr int kConstant = 0, kJc = 1, kSg = 2;  // strength::YieldModel's order
-constexpr int kGradyKipp = 1, kJcFailure = 2;   // strength::DamageModel's order
+constexpr int kConstant = 0, kJc = 1, kSg = 2, kZa = 3;  // strength::YieldModel's order
+constexpr int kGradyKipp = 1, kJcFailure = 2;            // strength::DamageModel's order
 
-constexpr std::array<KeyRow<Material>, 26> kStrength{{
+constexpr std::array<KeyRow<Material>, 31> kStrength{{
     {.key = "preset",
      .kind = K::Custom,
      .docValue = "a strength preset (docs/strength.md): `\"al6061_t6\"`, `\"al2017_t4\"`, "
-                 "`\"al2024_t3\"`, `\"copper_ofhc\"`, `\"steel_4340\"`, `\"tungsten\"`; its "
-                 "values may then be overridden one by one",
+                 "`\"al2024_t3\"`, `\"copper_ofhc\"`, `\"copper_ofhc_za\"`, `\"steel_4340\"`, "
+                 "`\"tungsten\"`; its values may then be overridden one by one",
      .docDefault = "none"},
     {.key = "model",
      .kind = K::Custom,
-     .docValue = "`\"constant\"`, `\"johnson_cook\"` or `\"steinberg_guinan\"`, with **all** its "
-                 "keys; with a preset of another model, that model's keys",
+     .docValue = "`\"constant\"`, `\"johnson_cook\"`, `\"steinberg_guinan\"` or "
+                 "`\"zerilli_armstrong\"`, with **all** its keys; with a preset of another model, "
+                 "that model's keys",
      .docDefault = "the preset's"},
     {.key = "damage",
      .kind = K::Custom,
@@ -243,6 +244,48 @@ constexpr std::array<KeyRow<Material>, 26> kStrength{{
      .docValue = "steinberg_guinan: **required**, >= 0 (the melt curve's a)",
      .required = true,
      .variant = kSg},
+    {.key = "za_c0",
+     .kind = K::Quantity,
+     HVI_YIELD_FIELD(ZerilliArmstrong, c0),
+     .dimension = Dimension::Pressure,
+     HVI_NONNEGATIVE,
+     .allowed = "a pressure >= 0",
+     .docValue = "zerilli_armstrong: **required**, pressure >= 0 (C0, the athermal stress)",
+     .required = true,
+     .variant = kZa},
+    {.key = "za_c2",
+     .kind = K::Quantity,
+     HVI_YIELD_FIELD(ZerilliArmstrong, c2),
+     .dimension = Dimension::Pressure,
+     HVI_NONNEGATIVE,
+     .allowed = "a pressure >= 0",
+     .docValue = "zerilli_armstrong: **required**, pressure >= 0 (C2)",
+     .required = true,
+     .variant = kZa},
+    {.key = "za_c3",
+     .kind = K::Number,
+     HVI_YIELD_FIELD(ZerilliArmstrong, c3),
+     HVI_NONNEGATIVE,
+     .allowed = "za_c3 >= 0 (1/K)",
+     .docValue = "zerilli_armstrong: **required**, >= 0, 1/K (C3)",
+     .required = true,
+     .variant = kZa},
+    {.key = "za_c4",
+     .kind = K::Number,
+     HVI_YIELD_FIELD(ZerilliArmstrong, c4),
+     HVI_NONNEGATIVE,
+     .allowed = "za_c4 >= 0 (1/K; the strain rate in 1/s)",
+     .docValue = "zerilli_armstrong: **required**, >= 0, 1/K with the strain rate in 1/s (C4)",
+     .required = true,
+     .variant = kZa},
+    {.key = "za_melt_temperature",
+     .kind = K::Number,
+     HVI_YIELD_FIELD(ZerilliArmstrong, meltTemperature),
+     HVI_POSITIVE,
+     .allowed = "a temperature > 0 in K",
+     .docValue = "zerilli_armstrong: **required**, K > 0 (Y = 0 at and above it)",
+     .required = true,
+     .variant = kZa},
 }};
 
 constexpr std::array<KeyRow<Material>, 9> kDamage{{

@@ -89,7 +89,19 @@ Material jcTungsten() {
   return {.shearModulus = 160.0 * kGPa, .yield = jc, .thermal = {.cv = 134.0 * kCv}};
 }
 
-const std::array<Preset, 6> kPresets{{
+Material zaCopper() {
+  // Zerilli and Armstrong (1987) OFHC copper, fcc form: C0 65 MPa, C2 890 MPa, C3 0.0028 /K,
+  // C4 0.000115 /K (eps_dot in 1/s); T_melt 1356 K, G 46 GPa and c_v 383 as copper_ofhc, so the
+  // two presets differ in the yield law alone. No damage: the paper gives none.
+  ZerilliArmstrong za{.c0 = 65.0 * kMPa,
+                      .c2 = 890.0 * kMPa,
+                      .c3 = 0.0028,
+                      .c4 = 0.000115,
+                      .meltTemperature = 1356.0};
+  return {.shearModulus = 46.0 * kGPa, .yield = za, .thermal = {.cv = 383.0 * kCv}};
+}
+
+const std::array<Preset, 7> kPresets{{
     {"al6061_t6", "Steinberg-Guinan, Steinberg (1991) UCRL-MA-106439", steinbergAl6061()},
     // No published JC or SG set for 2017-T4 is known to us: the 2024-T3 set of the same Al-Cu-Mg
     // family with A = 276 MPa, 2017-T4's 0.2 % yield (ASM Handbook vol. 2) instead of 369.
@@ -97,12 +109,13 @@ const std::array<Preset, 6> kPresets{{
      lesuerAl2024(276.0)},
     {"al2024_t3", "Johnson-Cook, Lesuer (2000) UCRL-ID-138213", lesuerAl2024(369.0)},
     {"copper_ofhc", "Johnson-Cook (1983), failure Johnson-Cook (1985)", jcCopper()},
+    {"copper_ofhc_za", "Zerilli-Armstrong (1987), fcc form", zaCopper()},
     {"steel_4340", "Johnson-Cook (1983), failure Johnson-Cook (1985)", jcSteel4340()},
     {"tungsten", "Johnson-Cook (1983), tungsten alloy", jcTungsten()},
 }};
 
-constexpr std::array<std::string_view, 3> kYieldNames{"constant", "johnson_cook",
-                                                      "steinberg_guinan"};
+constexpr std::array<std::string_view, 4> kYieldNames{"constant", "johnson_cook",
+                                                      "steinberg_guinan", "zerilli_armstrong"};
 constexpr std::array<std::string_view, 3> kDamageNames{"none", "grady_kipp", "johnson_cook"};
 
 }  // namespace

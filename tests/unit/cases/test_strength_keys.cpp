@@ -69,8 +69,8 @@ weibull_m = 9
 }
 
 TEST(StrengthKeys, ToTomlReadsBackToTheSameValues) {
-  for (const char* preset :
-       {"al6061_t6", "al2017_t4", "al2024_t3", "copper_ofhc", "steel_4340", "tungsten"}) {
+  for (const char* preset : {"al6061_t6", "al2017_t4", "al2024_t3", "copper_ofhc", "copper_ofhc_za",
+                             "steel_4340", "tungsten"}) {
     const Scene a = parseScene(
         plateScene(std::string("\n[materials.al.strength]\npreset = \"") + preset + "\"\n"),
         "s.toml");
@@ -85,6 +85,82 @@ TEST(StrengthKeys, ToTomlReadsBackToTheSameValues) {
               strength::yieldStress(y.yield, {.plasticStrain = 0.1, .temperature = 400.0}))
         << preset;
   }
+}
+
+TEST(StrengthKeys, ZerilliArmstrongModelAndPreset) {
+  // The model with all its keys, in the units given.
+  const Scene s = parseScene(plateScene(R"(
+[materials.al.strength]
+model = "zerilli_armstrong"
+shear_modulus = "46 GPa"
+specific_heat = "383 J/kg/K"
+za_c0 = "65 MPa"
+za_c2 = "0.89 GPa"
+za_c3 = 0.0028
+za_c4 = 0.000115
+za_melt_temperature = 1356
+)"),
+                             "s.toml");
+  const auto& za = std::get<strength::ZerilliArmstrong>(s.materials[0].strength->yield);
+  EXPECT_DOUBLE_EQ(za.c0, 65e-5);
+  EXPECT_DOUBLE_EQ(za.c2, 890e-5);
+  EXPECT_DOUBLE_EQ(za.c3, 0.0028);
+  EXPECT_DOUBLE_EQ(za.c4, 0.000115);
+  EXPECT_DOUBLE_EQ(za.meltTemperature, 1356.0);
+  // The preset, one key overridden (also by --set); its G and c_v are copper_ofhc's.
+  const std::string text = plateScene("\n[materials.al.strength]\npreset = \"copper_ofhc_za\"\n");
+  const Scene p = parseScene(text, "s.toml", {"materials.al.strength.za_c0=\"46.5 MPa\""});
+  const auto& st = *p.materials[0].strength;
+  EXPECT_DOUBLE_EQ(std::get<strength::ZerilliArmstrong>(st.yield).c0, 46.5e-5);
+  EXPECT_DOUBLE_EQ(std::get<strength::ZerilliArmstrong>(st.yield).c2, 890e-5);
+  EXPECT_DOUBLE_EQ(st.shearModulus, 0.46);
+  EXPECT_DOUBLE_EQ(st.thermal.cv, 383e-8);
+  EXPECT_EQ(st.damage.index(), 0u);  // none: the paper gives no failure model
+}
+
+TEST(StrengthKeys, ZerilliArmstrongErrors) {
+  // A key of the model missing: named, with the model.
+  std::string e = errorOf(plateScene(R"(
+[materials.al.strength]
+model = "zerilli_armstrong"
+shear_modulus = "46 GPa"
+specific_heat = "383 J/kg/K"
+za_c0 = "65 MPa"
+za_c2 = "890 MPa"
+za_c3 = 0.0028
+za_melt_temperature = 1356
+)"));
+  EXPECT_TRUE(contains(e, "za_c4")) << e;
+  // Out of range, with what is allowed.
+  e = errorOf(plateScene("\n[materials.al.strength]\npreset = \"copper_ofhc_za\"\nza_c3 = -0.1\n"));
+  EXPECT_TRUE(contains(e, "za_c3")) << e;
+  EXPECT_TRUE(contains(e, "must be >= 0")) << e;
+  e = errorOf(
+      plateScene("\n[materials.al.strength]\npreset = \"copper_ofhc_za\"\nza_c0 = \"-1 MPa\"\n"));
+  EXPECT_TRUE(contains(e, "za_c0")) << e;
+  EXPECT_TRUE(contains(e, "must be >= 0")) << e;
+  e = errorOf(plateScene(
+      "\n[materials.al.strength]\npreset = \"copper_ofhc_za\"\nza_melt_temperature = 0\n"));
+  EXPECT_TRUE(contains(e, "za_melt_temperature")) << e;
+  EXPECT_TRUE(contains(e, "must be > 0")) << e;
+  // A pressure where one is due.
+  e = errorOf(
+      plateScene("\n[materials.al.strength]\npreset = \"copper_ofhc_za\"\nza_c2 = \"890 K\"\n"));
+  EXPECT_TRUE(contains(e, "za_c2")) << e;
+  // Keys of another model, either way round.
+  e = errorOf(
+      plateScene("\n[materials.al.strength]\npreset = \"copper_ofhc_za\"\njc_a = \"1 GPa\"\n"));
+  EXPECT_TRUE(contains(e, "jc_a")) << e;
+  EXPECT_TRUE(contains(e, "not a parameter of model = \"zerilli_armstrong\"")) << e;
+  e = errorOf(
+      plateScene("\n[materials.al.strength]\npreset = \"copper_ofhc\"\nza_c0 = \"1 MPa\"\n"));
+  EXPECT_TRUE(contains(e, "za_c0")) << e;
+  EXPECT_TRUE(contains(e, "not a parameter of model = \"johnson_cook\"")) << e;
+  // The model's name among the allowed ones.
+  e = errorOf(plateScene("\n[materials.al.strength]\nmodel = \"zerilli\"\n"));
+  EXPECT_TRUE(contains(e, "zerilli_armstrong")) << e;
+  e = errorOf(plateScene("\n[materials.al.strength]\npreset = \"copper_za\"\n"));
+  EXPECT_TRUE(contains(e, "copper_ofhc_za")) << e;
 }
 
 TEST(StrengthKeys, SetReachesTheStrengthTable) {

@@ -110,6 +110,46 @@ TEST(StrengthYield, JohnsonCookByHand) {
   EXPECT_EQ(jc.yield({.plasticStrain = 0.3, .temperature = 2000.0}), 0.0);
 }
 
+TEST(StrengthYield, ZerilliArmstrongByHand) {
+  // OFHC copper (Zerilli and Armstrong 1987, fcc) at eps_p 0.25, 1000/s, 400 K:
+  // 65 + 890 * 0.5 * exp(-0.0028 * 400 + 0.000115 * 400 * ln 1000)
+  // = 65 + 445 * exp(-1.12 + 0.3177567) = 65 + 445 * 0.4483221 = 264.5033 MPa.
+  const auto* cu = hs::findPreset("copper_ofhc_za");
+  ASSERT_NE(cu, nullptr);
+  const auto& za = std::get<hs::ZerilliArmstrong>(cu->material.yield);
+  EXPECT_NEAR(za.yield({.plasticStrain = 0.25, .strainRate = 1e-3, .temperature = 400.0}),
+              2.645033e-3, 1e-9);
+  // Quasi-static, 300 K: 65 + 890 * 0.5 * exp(-0.84) = 65 + 445 * 0.4317105 = 257.1112 MPa;
+  // below 1/s the rate term is 0 (floor), as at 1/s.
+  const double slow = 65e-5 + 445e-5 * std::exp(-0.84);
+  EXPECT_NEAR(za.yield({.plasticStrain = 0.25, .strainRate = 1e-6, .temperature = 300.0}), slow,
+              1e-15);
+  EXPECT_DOUBLE_EQ(za.yield({.plasticStrain = 0.25, .strainRate = 1e-12, .temperature = 300.0}),
+                   za.yield({.plasticStrain = 0.25, .strainRate = 1e-6, .temperature = 300.0}));
+  EXPECT_NEAR(slow, 2.571112e-3, 1e-9);
+  // No plastic strain: the athermal C0 = 65 MPa at any rate and temperature below melt; at rest
+  // (rate 0) no ln 0.
+  EXPECT_DOUBLE_EQ(za.yield({.strainRate = 0.0, .temperature = 300.0}), 65e-5);
+  EXPECT_DOUBLE_EQ(za.yield({.strainRate = 1.0, .temperature = 1300.0}), 65e-5);
+  // Just below the melt temperature the law still holds (it never reaches 0 by itself):
+  // 1000 K, 10^4/s, eps_p 1: 65 + 890 exp(-2.8 + 0.115 ln 10^4) = 65 + 890 * 0.1753781.
+  EXPECT_NEAR(za.yield({.plasticStrain = 1.0, .strainRate = 1e-2, .temperature = 1000.0}),
+              65e-5 + 890e-5 * std::exp(-2.8 + 0.115 * std::log(1e4)), 1e-15);
+  EXPECT_NEAR(std::exp(-2.8 + 0.115 * std::log(1e4)), 0.1753781, 1e-7);
+  // At and above T_melt = 1356 K: zero, the athermal part too.
+  EXPECT_EQ(za.yield({.plasticStrain = 0.3, .strainRate = 1e-3, .temperature = 1356.0}), 0.0);
+  EXPECT_EQ(za.yield({.temperature = 2000.0}), 0.0);
+  // Through the variant; the shear modulus is the material's constant G0.
+  EXPECT_EQ(hs::yieldStress(cu->material.yield, {.plasticStrain = 0.25, .temperature = 400.0}),
+            za.yield({.plasticStrain = 0.25, .temperature = 400.0}));
+  EXPECT_EQ(hs::shearModulus(cu->material, 0.1, 900.0, 1.1), 0.46);
+  // The same G, c_v and melt as copper_ofhc: the presets differ in the yield law alone.
+  const auto& jc = hs::findPreset("copper_ofhc")->material;
+  EXPECT_EQ(cu->material.shearModulus, jc.shearModulus);
+  EXPECT_EQ(cu->material.thermal.cv, jc.thermal.cv);
+  EXPECT_EQ(za.meltTemperature, std::get<hs::JohnsonCook>(jc.yield).meltTemperature);
+}
+
 TEST(StrengthRate, EquivalentStrainRateByHand) {
   // sqrt(2/3 e':e') is the axial rate of incompressible uniaxial stress: in r-z, dvz/dz = -2,
   // dvr/dr = v_r / r = 1 (a rod shortening at 2 /us) gives 2.
@@ -280,9 +320,9 @@ TEST(StrengthModuli, LongitudinalSpeedAndYoungsModulus) {
 }
 
 TEST(StrengthPresets, EveryPresetIsComplete) {
-  ASSERT_EQ(hs::presets().size(), 6u);
-  for (const char* name :
-       {"al6061_t6", "al2017_t4", "al2024_t3", "copper_ofhc", "steel_4340", "tungsten"}) {
+  ASSERT_EQ(hs::presets().size(), 7u);
+  for (const char* name : {"al6061_t6", "al2017_t4", "al2024_t3", "copper_ofhc", "copper_ofhc_za",
+                           "steel_4340", "tungsten"}) {
     const auto* p = hs::findPreset(name);
     ASSERT_NE(p, nullptr) << name;
     EXPECT_GT(p->material.shearModulus, 0.0) << name;

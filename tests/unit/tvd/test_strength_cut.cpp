@@ -387,6 +387,74 @@ TEST(TvdStrengthCut, TaylorAnvilCopperAtThreeSpeeds) {
   }
 }
 
+// The shipped TVD Taylor scene with Zerilli and Armstrong's OFHC copper (preset copper_ofhc_za:
+// J. Appl. Phys. 61 (1987) 1816, the paper that compared its model with this very shot;
+// docs/strength.md, "Zerilli-Armstrong copper") instead of Johnson and Cook's: the yield law is
+// the only difference.
+cases::Scene zerilliArmstrongTaylor(const std::string& cellSize) {
+  return cases::loadScene(
+      cases::test::shippedDir() / "taylor_copper_tvd.toml",
+      {"tvd.cell_size=" + cellSize, "materials.copper.strength.preset=\"copper_ofhc_za\""});
+}
+
+// Issue 15's criterion met: at 190 m/s the Zerilli-Armstrong rod's length and foot are both
+// within the issue's 5 % of the measurement. Measured at D0/30: L 1.6685 cm (+3.0 %), foot
+// 1.3055 cm (-3.8 %). The length is converged (+3.5, +3.0, +2.9, +3.2 % at D0/20, 30, 40, 60);
+// the foot grows with resolution towards the measurement (-5.7, -3.8, -2.6, -1.4 %), so D0/30
+// is the coarsest spacing that meets 5 % on both (4 s; D0/20's foot misses by 0.7 %).
+// Johnson-Cook 1983 on the same grid: +6 to +7 % long (TaylorAnvilCopper above). Energy and
+// rest as there.
+TEST(TvdStrengthCut, TaylorAnvilCopperZerilliArmstrong) {
+  const cases::Scene s = zerilliArmstrongTaylor("0.0254 cm");
+  TvdSolver solver(s);
+  const Totals t0 = solver.totals();
+  runTo(solver, s.tEnd);
+  const Totals t1 = solver.totals();
+  const Budget led = solver.ledger().sum();
+  const auto [length, foot] = rodShape(solver);
+  std::printf(
+      "TVD Taylor anvil, Zerilli-Armstrong, D0/30, %ld steps: L = %.4f cm (%+.1f %%), foot "
+      "%.4f cm (%+.1f %%), floors %.1e, kinetic energy left %.1e\n",
+      static_cast<long>(solver.step()), length, 100.0 * (length / test::kTaylorFinalLength - 1.0),
+      foot, 100.0 * (foot / test::kTaylorFootDiameter - 1.0),
+      solver.ledger().floors.energy / t0.energy(), t1.kinetic / t0.kinetic);
+  EXPECT_NEAR(t1.energy() - t0.energy(), led.energy, 1e-12 * t0.energy());
+  EXPECT_LT(std::abs(solver.ledger().floors.energy), 1e-3 * t0.energy());
+  EXPECT_LT(t1.kinetic, 1e-2 * t0.kinetic);
+  EXPECT_NEAR(length / test::kTaylorFinalLength, 1.0, 0.05);
+  EXPECT_NEAR(foot / test::kTaylorFootDiameter, 1.0, 0.05);
+}
+
+// The Zerilli-Armstrong rod at the compilation's three shots (test/taylor_data.hpp), D0/20:
+// every length within the issue's 5 % (measured +1.7, +1.9, +3.5 % at 130, 146, 190 m/s; at
+// D0/60 +1.7, +1.9, +3.2 %), shorter with a wider foot the faster the shot, the rod at rest. The
+// feet are printed, not held: +4.8, +2.3, -5.7 % here, but resolved the slower shots' feet are
+// too wide (+7.5, +5.7 % at D0/60; Johnson-Cook: +12.0, +11.3 %), the 190 m/s one within 5 %
+// (-1.4 %). 4.2 s.
+TEST(TvdStrengthCut, TaylorAnvilCopperZerilliArmstrongAtThreeSpeeds) {
+  double lastLength = 1e300, lastFoot = 0.0;
+  for (const test::TaylorShot& shot : test::kTaylorShots) {
+    cases::Scene s = zerilliArmstrongTaylor("0.0381 cm");
+    s.bodies[0].velocity = {0.0, -shot.speed};
+    TvdSolver solver(s);
+    const Totals t0 = solver.totals();
+    runTo(solver, s.tEnd);
+    const Totals t1 = solver.totals();
+    const auto [length, foot] = rodShape(solver);
+    std::printf(
+        "TVD Taylor anvil, Zerilli-Armstrong, D0/20, %.0f m/s: L = %.4f cm (%+.1f %%), foot "
+        "%.4f cm (%+.1f %%)\n",
+        shot.speed * 1e4, length, 100.0 * (length / shot.length - 1.0), foot,
+        100.0 * (foot / shot.foot - 1.0));
+    EXPECT_NEAR(length / shot.length, 1.0, 0.05) << shot.speed;
+    EXPECT_LT(t1.kinetic, 1e-2 * t0.kinetic) << shot.speed;
+    EXPECT_LT(length, lastLength) << shot.speed;
+    EXPECT_GT(foot, lastFoot) << shot.speed;
+    lastLength = length;
+    lastFoot = foot;
+  }
+}
+
 TEST(TvdStrengthCut, TotalEnergyIsConserved) { checkEnergy(Geometry::Planar); }
 TEST(TvdStrengthCut, TotalEnergyIsConservedInRz) { checkEnergy(Geometry::Axisymmetric); }
 TEST(TvdStrengthCut, TotalEnergyIsConservedWithOutflowSides) {

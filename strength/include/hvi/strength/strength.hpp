@@ -134,8 +134,28 @@ struct SteinbergGuinan {
   }
 };
 
+//! Zerilli and Armstrong (1987, J. Appl. Phys. 61, 1816), the fcc form (their c1 = c5 = 0):
+//!   Y = C0 + C2 sqrt(eps_p) exp(-C3 T + C4 T ln eps_dot),  eps_dot in 1/s, T in K,
+//! the form of their copper relation (and of Uintah's ZAFlow and OpenRadioss's law 131 fcc
+//! branch). The rate is floored at 1/s (ln eps_dot >= 0): as Johnson-Cook's clamp, no softening
+//! below the rate the constants' unit names, and no ln 0 at rest. The law has no melt of its own
+//! (it only decays with T), so Y = 0 at or above T_melt, a material constant as Johnson-Cook's.
+struct ZerilliArmstrong {
+  double c0 = 0.0, c2 = 0.0;                  //!< athermal stress and hardening coefficient, Mbar
+  double c3 = 0.0, c4 = 0.0;                  //!< 1/K
+  double meltTemperature = 1.0e4;             //!< K
+  static constexpr double kPerSecond = 1e-6;  //!< 1/s in 1/us: the constants' rate unit
+  [[nodiscard]] double yield(const YieldInput& in) const {
+    if (in.temperature >= meltTemperature) return 0.0;
+    if (!(in.plasticStrain > 0.0)) return c0;
+    const double t = in.temperature;
+    const double lnRate = std::log(std::max(in.strainRate / kPerSecond, 1.0));
+    return c0 + c2 * std::sqrt(in.plasticStrain) * std::exp(-c3 * t + c4 * t * lnRate);
+  }
+};
+
 //! One yield law per material, dispatched once per material outside the hot loops.
-using YieldModel = std::variant<ConstantYield, JohnsonCook, SteinbergGuinan>;
+using YieldModel = std::variant<ConstantYield, JohnsonCook, SteinbergGuinan, ZerilliArmstrong>;
 inline double yieldStress(const YieldModel& m, const YieldInput& in) {
   return std::visit([&](const auto& y) { return y.yield(in); }, m);
 }
@@ -286,7 +306,7 @@ inline double grownDamage(const Material& sm, double d, double dt, double p, dou
   return d;
 }
 
-//! "constant", "johnson_cook", "steinberg_guinan" (YieldModel's order).
+//! "constant", "johnson_cook", "steinberg_guinan", "zerilli_armstrong" (YieldModel's order).
 std::span<const std::string_view> yieldModelNames();
 //! "none", "grady_kipp", "johnson_cook" (DamageModel's order).
 std::span<const std::string_view> damageModelNames();
