@@ -242,8 +242,8 @@ RadialErrors axialShock(double alpha, double kappa, cases::RzForm form = cases::
   SphSolver solver(s);
   while (solver.time() < t) solver.advance(t);
   const ParticleSystem p = solver.stepper().particles();
-  double sa = 0.0, sb = 0.0, s2 = 0.0;
-  int na = 0, nb = 0, n2 = 0;
+  double sa = 0.0, sb = 0.0;
+  int na = 0, nb = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.x[i] < 3 * dx) sa += p.vx[i] * p.vx[i], ++na;
     if (p.x[i] > 10 * dx && p.x[i] < 20 * dx) sb += p.vx[i] * p.vx[i], ++nb;
