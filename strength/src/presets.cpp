@@ -91,14 +91,16 @@ Material jcTungsten() {
 
 Material zaCopper() {
   // Zerilli and Armstrong (1987) OFHC copper, fcc form: C0 65 MPa, C2 890 MPa, C3 0.0028 /K,
-  // C4 0.000115 /K (eps_dot in 1/s); T_melt 1356 K, G 46 GPa and c_v 383 as copper_ofhc, so the
-  // two presets differ in the yield law alone. No damage: the paper gives none.
-  ZerilliArmstrong za{.c0 = 65.0 * kMPa,
-                      .c2 = 890.0 * kMPa,
-                      .c3 = 0.0028,
-                      .c4 = 0.000115,
-                      .meltTemperature = 1356.0};
-  return {.shearModulus = 46.0 * kGPa, .yield = za, .thermal = {.cv = 383.0 * kCv}};
+  // C4 0.000115 /K (eps_dot in 1/s). G, c_v and T_melt are copper_ofhc's, so the two presets
+  // differ in the yield law alone. No damage: the paper gives none.
+  Material m = jcCopper();
+  m.yield = ZerilliArmstrong{.c0 = 65.0 * kMPa,
+                             .c2 = 890.0 * kMPa,
+                             .c3 = 0.0028,
+                             .c4 = 0.000115,
+                             .meltTemperature = std::get<JohnsonCook>(m.yield).meltTemperature};
+  m.damage = NoDamage{};
+  return m;
 }
 
 const std::array<Preset, 7> kPresets{{
