@@ -557,7 +557,7 @@ class CutLineSolver {
     // faces that carry its mass out are scaled down until it keeps none to spare (a
     // positivity-preserving flux limiter in the sense of Hu, Adams and Shu, J. Comput. Phys.
     // 242 (2013) 169). A face flux is shared by its two cells, so this stays conservative.
-    absorbFading(ph);
+    const bool absorbed = absorbFading(ph);
     for (int pass = 0; pass < 8; ++pass) {
       bool short_ = false;
       for (int j = 2; j <= n_ + 1; ++j) {
@@ -590,7 +590,7 @@ class CutLineSolver {
       }
       if (!short_) break;
     }
-    settleAbsorbed(ph);
+    if (absorbed) settleAbsorbed(ph);
   }
 
   // The stage's result must be physical where the cell is live: a state the fallback and the
@@ -713,8 +713,10 @@ class CutLineSolver {
   // A cell whose part the stage moved out entirely (a trailing edge crossing its face: the
   // working volume went below zero, and with it, consistently, its mass) hands what it overdrew
   // to the neighbour through the face it drained by, and that face is dry for the rest of the
-  // step: the edge now lies in the neighbour, whose part shrinks from the next stage on.
-  void absorbFading(PhaseLine& ph) {
+  // step: the edge now lies in the neighbour, whose part shrinks from the next stage on. True if
+  // any cell was absorbed.
+  bool absorbFading(PhaseLine& ph) {
+    bool any = false;
     for (int j = 2; j <= n_ + 1; ++j) {
       if (!ph.present[j] || !(ph.volW[j] < 0.0)) continue;
       const double outR =
@@ -731,16 +733,15 @@ class CutLineSolver {
         f = j - 1;
       }
       if (t < 0) continue;
+      handOver(ph, j, t);
       const double vj = 1.0 / W_.invVol[j], vt = 1.0 / W_.invVol[t];
-      for (int k = 0; k < 4; ++k) {
-        ph.w[k][t] += ph.w[k][j] * vj / vt;
-        ph.w[k][j] = 0.0;
-      }
       ph.volW[t] += ph.volW[j] * vj / vt;
       ph.volW[j] = 0.0;
       ph.dry[f] = 1;
       ph.into[j] = t;
+      any = true;
     }
+    return any;
   }
   // What the positivity limiter moved through the faces of a cell absorbFading emptied belongs
   // to the cell that absorbed it (the edge now lies there). The limiter scales a chain of faces
@@ -753,11 +754,15 @@ class CutLineSolver {
       const int t = ph.into[j];
       if (t < 0) continue;
       ph.into[j] = -1;
-      const double vj = 1.0 / W_.invVol[j], vt = 1.0 / W_.invVol[t];
-      for (int k = 0; k < 4; ++k) {
-        ph.w[k][t] += ph.w[k][j] * vj / vt;
-        ph.w[k][j] = 0.0;
-      }
+      handOver(ph, j, t);
+    }
+  }
+  // Cell j's stage result joins cell t's (integrals: per cell volume times the volume ratio).
+  void handOver(PhaseLine& ph, int j, int t) {
+    const double vj = 1.0 / W_.invVol[j], vt = 1.0 / W_.invVol[t];
+    for (int k = 0; k < 4; ++k) {
+      ph.w[k][t] += ph.w[k][j] * vj / vt;
+      ph.w[k][j] = 0.0;
     }
   }
   // A cell whose working part has faded below kLiveFraction of its fraction (an edge leaving
