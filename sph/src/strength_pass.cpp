@@ -528,7 +528,11 @@ void StrengthModel::refreshPoints(const PairArrays& a, std::size_t n, const doub
     const auto* sg = std::get_if<strength::SteinbergGuinan>(&sm.yield);
     const double g = sg ? sg->shearModulusAt(a.p[i], temp, et.cbrt) : sm.shearModulus;
     g_[i] = g;
-    cL[i] = strength::longitudinalSoundSpeed(a.c[i], g, rho);
+    // Failed material (D = 1) returns to a zero yield every step and carries no deviator: no
+    // shear wave, its fastest signal is the bulk sound speed. Below D = 1 an elastic wave under
+    // (1 - D) Y still travels at the intact c_L, which the crack growth also reads.
+    cL[i] = fracture_ && damage[i] >= 1.0 ? a.c[i]
+                                          : strength::longitudinalSoundSpeed(a.c[i], g, rho);
     // The radius weight rw (1 in planar geometry) as in the pressure's q = rw P / rho^2.
     const double rw = a.rw[i];
     const double ir2 = rw / (rho * rho);

@@ -68,7 +68,9 @@ double TvdSolver::signalSpeedCut(double* vx, double* vz, long* worstCell) const 
                 if (r < rhoStep) return 0;  // below the time-step density: not in the CFL
                 s = detail::cellState(eos, r, q.mx[cc] / a, q.mz[cc] / a, q.E[cc] / a);
                 // Strength: a solid phase's longitudinal wave c_L = sqrt(c^2 + 4G / (3 rho)).
-                if (solid)
+                if (solid && !detail::failedMaterial(
+                                 strength_->phases[static_cast<std::size_t>(p)].rq[detail::kDamage],
+                                 cc, q.rho[cc]))
                   s.c = strength::longitudinalSoundSpeed(s.c, phaseShearModulus(p, r, s.e, s.p), r);
                 return 1;
               });

@@ -213,7 +213,7 @@ double TvdSolver::signalSpeedPass(double* vx, double* vz, long* worstCell) const
             if (!(r > 0.0)) return -1;
             s = detail::cellState(eos, r, U_.mx[cc], U_.mz[cc], U_.E[cc]);
             // Strength: the longitudinal wave c_L = sqrt(c^2 + 4G / (3 rho)) is the fastest.
-            if (strength_)
+            if (strength_ && !detail::failedMaterial(strength_->rq[detail::kDamage], cc, r))
               s.c = strength::longitudinalSoundSpeed(s.c, strengthShearModulus(r, s.e, s.p), r);
             if (vx != nullptr) {  // an unphysical state stops the run below, whatever it wrote
               vx[c] = s.u;

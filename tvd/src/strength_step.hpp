@@ -59,6 +59,15 @@ struct StrengthState {
   std::array<std::vector<double>, 5> grad;
 };
 
+//! Failed material (effect fracture: D = 1, to the round-off of the advected ratio rho D / rho)
+//! returns to a zero yield every step and carries no deviator: no shear wave, so its c_L in the
+//! time step is the bulk sound speed (docs/strength.md, "TVD fracture"). `rhoD` is the damage
+//! component of rq (empty without fracture), `rho` the cell's (phase's) density of the same
+//! normalisation.
+inline bool failedMaterial(const std::vector<double>& rhoD, std::size_t c, double rho) {
+  return !rhoD.empty() && rhoD[c] >= (1.0 - 1e-12) * rho;
+}
+
 //! The sub-step's boundary sides (xmin, xmax, zmin, zmax): true where the side mirrors (a wall
 //! or the axis), false for an outflow side.
 using StrengthSides = std::array<bool, 4>;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -513,6 +514,47 @@ TEST(SphStrength, SymmetricImpactSpallsWhereTheReleasesMeet) {
   EXPECT_LT(std::abs(weak.energyDrift), 1e-12);
   EXPECT_NEAR(weak.meanDepth, 0.2, 0.03);
   EXPECT_EQ(strong.failed, 0);
+}
+
+// Failed material carries no shear wave: at D = 1 the yield is (1 - D) Y = 0, the radial return
+// removes every deviator each step, and the fastest signal is the bulk sound speed, so the time
+// step reads c, not c_L = sqrt(c^2 + 4G / (3 rho)). A slab at rest stretched to 0.98 rho0
+// (P ~ -0.015 Mbar) fails everywhere at the first step's end with a spall strength of
+// 0.001 Mbar, and then sits at P = 0 (failed material resists compression only). Against the
+// same slab that does not fail (spall strength 1 Mbar) the second step is longer by
+// (c_L + 0.6 alpha c) / (c + 0.6 alpha c) (particleTimeStep's signal speed at rest, alpha = 1),
+// 1.13 for this aluminium. Bound 1 %: the free ends move in the first step (|v| ~ 2e-3 cm/us,
+// 0.3 % of the signal speed) and the two slabs' states differ by that step's motion alone.
+TEST(SphStrength, FailedMaterialStepsWithTheBulkSoundSpeed) {
+  auto stretched = [](double spallStrength) {
+    cases::Scene s = slab(0.01, 4, 0.2, 0.1, 0.0, 0.003, true);
+    s.effects.insert(Effect::Fracture);
+    s.materials[0].strength->spallStrength = spallStrength;
+    for (auto& b : s.bodies) b.density *= 0.98;
+    return s;
+  };
+  auto secondStep = [&](double spallStrength) {
+    SphSolver solver(stretched(spallStrength));
+    solver.advance(1e9);
+    const double t1 = solver.time();
+    solver.advance(1e9);
+    const StrengthFields f = solver.stepper().strengthFields();
+    const auto [lo, hi] = std::minmax_element(f.damage.begin(), f.damage.end());
+    return std::array<double, 3>{solver.time() - t1, *lo, *hi};
+  };
+  const auto failed = secondStep(0.001), intact = secondStep(1.0);
+  EXPECT_EQ(failed[1], 1.0);  // every particle failed
+  EXPECT_EQ(intact[2], 0.0);  // none did
+  // The solver's EOS (no tension cut-off in this scene) at the slab's state.
+  const cases::Material al = cases::resolveMaterials(stretched(1.0)).at(0);
+  const double rho = 0.98 * eos::referenceDensity(al.eos);
+  const double c = eos::state(al.eos, rho, 0.0).soundSpeed;
+  const double cL = strength::longitudinalSoundSpeed(c, kShear, rho);
+  const double expected = (cL + 0.6 * c) / (c + 0.6 * c);
+  std::printf("second step: failed %.6e us, intact %.6e us, ratio %.4f (expected %.4f: c %.4f, "
+              "c_L %.4f cm/us)\n",
+              failed[0], intact[0], failed[0] / intact[0], expected, c, cL);
+  EXPECT_NEAR(failed[0] / intact[0], expected, 0.01 * expected);
 }
 
 // The same impact with Grady-Kipp tensile damage (Benz and Asphaug 1995) and no spall-strength

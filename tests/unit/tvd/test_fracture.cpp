@@ -304,6 +304,64 @@ void checkConservation(Geometry g) {
 TEST(TvdFracture, MassAndEnergyAreConserved) { checkConservation(Geometry::Planar); }
 TEST(TvdFracture, MassAndEnergyAreConservedInRz) { checkConservation(Geometry::Axisymmetric); }
 
+// Failed material steps with the bulk sound speed (the SPH test's set-up, SphStrength.
+// FailedMaterialStepsWithTheBulkSoundSpeed): at D = 1 the yield is (1 - D) Y = 0 and no
+// deviator is carried, so no shear wave, and the step reads c, not c_L. An elastic aluminium
+// block at rest at 0.98 rho0 (P ~ -0.015 Mbar) fills a box of walls, so that every cell is away
+// from a free surface (where the failure rule holds), as one material without marker lines and
+// as a phase of the conservative interfaces (their own time-step scan; one body: a contact
+// between two bodies opens under tension, and the block would not stay at rest). With a spall strength of 0.001 Mbar every cell fails at the
+// first step's end and then sits at P = 0; with 1 Mbar none does. At rest the step is
+// cfl dx / max c_L (intact) or cfl dx / max c (failed): the second steps differ by c_L / c
+// (1.24). The block stays at rest and uniform (walls, one state), so the ratio is exact to
+// round-off: bound 1e-12.
+double secondStepOfAStretchedBlock(bool phases, double spallStrength, double* damage) {
+  const double dx = 0.02;
+  cases::Scene s = fractureScene(0.0, 0.2, 0.0, 0.2, dx);
+  if (!phases) s.effects.erase(Effect::MaterialInterfaces);
+  s.domain.boundary = {cases::Boundary::Wall, cases::Boundary::Wall, cases::Boundary::Wall,
+                       cases::Boundary::Wall};
+  cases::Material al = material("aluminium", eos::aluminiumStudy());
+  strength::Material sm;  // elastic, as symmetricSpall's
+  sm.shearModulus = 0.276;
+  sm.yield = strength::ConstantYield{1.0};
+  sm.thermal.cv = 0.896e-5;
+  sm.spallStrength = spallStrength;
+  al.strength = sm;
+  s.materials = {al};
+  const double rho = 0.98 * eos::referenceDensity(al.eos);
+  s.bodies = {body("block", 0, cases::Rect{0.0, 0.2, 0.0, 0.2}, {rho, {}, 0.0})};
+  TvdSolver solver(s);
+  solver.advance(1e9);
+  const double t1 = solver.time();
+  solver.advance(1e9);
+  const Snapshot snap = solver.snapshot();
+  const Field& d = field(snap, "damage");
+  *damage = *std::min_element(d.data.begin(), d.data.end());
+  if (spallStrength >= 1.0) *damage = *std::max_element(d.data.begin(), d.data.end());
+  return solver.time() - t1;
+}
+
+TEST(TvdFracture, FailedMaterialStepsWithTheBulkSoundSpeed) {
+  cases::Scene s = fractureScene(0.0, 1.0, 0.0, 1.0, 0.1);
+  s.materials = {material("aluminium", eos::aluminiumStudy())};
+  const cases::Material al = cases::resolveMaterials(s).at(0);  // no tension cut-off
+  const double rho = 0.98 * eos::referenceDensity(al.eos);
+  const double c = eos::state(al.eos, rho, 0.0).soundSpeed;
+  const double expected = strength::longitudinalSoundSpeed(c, 0.276, rho) / c;
+  for (bool phases : {false, true}) {
+    double dFailed = 0.0, dIntact = 1.0;
+    const double failed = secondStepOfAStretchedBlock(phases, 0.001, &dFailed);
+    const double intact = secondStepOfAStretchedBlock(phases, 1.0, &dIntact);
+    std::printf("%s: second step failed %.6e us, intact %.6e us, ratio %.6f (c_L / c %.6f)\n",
+                phases ? "conservative interfaces" : "one material", failed, intact, failed / intact,
+                expected);
+    EXPECT_EQ(dFailed, 1.0);  // every cell failed
+    EXPECT_EQ(dIntact, 0.0);  // none did
+    EXPECT_NEAR(failed / intact, expected, 1e-12 * expected);
+  }
+}
+
 // Restart with the damage in the checkpoint (version 7): the run continues bit for bit; a
 // checkpoint across the fracture switch is refused.
 TEST(TvdFracture, RestartIsBitForBit) {
