@@ -158,11 +158,13 @@ constexpr std::array<KeyRow<TvdParams>, 7> kTvd{{
     // docs/tvd.md, "Outflow sides: no re-entry": the conservative interfaces only.
     {.key = "outflow", .kind = K::Choice, HVI_KEY_FIELD(TvdParams, outflow),
      .choices = outflowModeNames,
-     .docValue = "`\"open\"` (zero-gradient ghost: material may re-enter), `\"no_reentry\"` "
+     .docValue = "`\"auto\"` (`\"no_reentry\"` with the conservative interfaces, else "
+                 "`\"open\"`), `\"open\"` (zero-gradient ghost: material may re-enter), "
+                 "`\"no_reentry\"` "
                  "(a phase moving inwards meets a wall there; conservative interfaces), "
                  "`\"no_reentry_cut\"` (the same, and the marker lines are cut at the side; an "
                  "experiment, docs/tvd.md)",
-     .docDefault = "`\"open\"`"},
+     .docDefault = "`\"auto\"`"},
 }};
 
 // Measured on sod_x at 1e6 cells: 170 MB peak memory, 49 MB of HDF5 + VTK per snapshot, 2 s for

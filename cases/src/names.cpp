@@ -16,7 +16,8 @@ constexpr std::array<std::string_view, 2> kEnergyForms{"compatible", "symmetric"
 constexpr std::array<std::string_view, 3> kRzForms{"auto", "ring", "symmetric"};
 constexpr std::array<std::string_view, 2> kViscositySwitches{"off", "morris_monaghan"};
 constexpr std::array<std::string_view, 2> kYieldStrainRates{"total", "plastic"};
-constexpr std::array<std::string_view, 3> kOutflowModes{"open", "no_reentry", "no_reentry_cut"};
+constexpr std::array<std::string_view, 4> kOutflowModes{"open", "no_reentry", "no_reentry_cut",
+                                                         "auto"};
 
 template <class E, std::size_t N>
 std::string_view nameOf(const std::array<std::string_view, N>& names, E e) {

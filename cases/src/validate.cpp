@@ -155,7 +155,7 @@ void checkSphFill(const TableReader& root, const Scene& scene, const Sources& sr
 // tvd.outflow = "no_reentry" (and "no_reentry_cut") is a rule of the cut cells' phase faces
 // (docs/tvd.md, "Outflow sides: no re-entry"): the conservative interface mode only.
 void checkTvdOutflow(const TableReader& root, const Scene& scene) {
-  if (scene.tvd.outflow != OutflowMode::Open &&
+  if (scene.tvd.outflow != OutflowMode::Open && scene.tvd.outflow != OutflowMode::Auto &&
       !(scene.has(Effect::MaterialInterfaces) &&
         scene.tvd.interfaces == InterfaceMode::Conservative))
     root.subTable("tvd", true)

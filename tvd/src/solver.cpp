@@ -26,6 +26,9 @@ TvdSolver::~TvdSolver() = default;
 
 TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
     : geometry_(scene.geometry), domain_(scene.domain), params_(scene.tvd), options_(options) {
+  // "auto" too: the rule acts on the cut cells' phase faces only, so it is no re-entry where the
+  // conservative interfaces run and changes nothing elsewhere (docs/tvd.md, "Outflow sides: no
+  // re-entry").
   if (scene.tvd.outflow != cases::OutflowMode::Open) options_.closedOutflow = true;
   if (scene.tvd.outflow == cases::OutflowMode::NoReentryCut) options_.cutOutflowLines = true;
   setUpGrid(scene);

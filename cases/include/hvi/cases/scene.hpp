@@ -160,13 +160,14 @@ enum class Limiter { Minmod, VanLeer, Superbee };
 //! of a cell, mass exact per material).
 enum class InterfaceMode { WholeCell, Conservative };
 //! TVD cut-cell mode at outflow sides: the zero-gradient ghost (material may re-enter) or no
-//! re-entry (docs/tvd.md, "Outflow sides: no re-entry").
-enum class OutflowMode { Open, NoReentry, NoReentryCut };
+//! re-entry (docs/tvd.md, "Outflow sides: no re-entry"); Auto (the default) is no re-entry where
+//! the conservative interfaces run (the only mode it acts in) and open otherwise.
+enum class OutflowMode { Open, NoReentry, NoReentryCut, Auto };
 
 struct TvdParams {
   double cellSize = 0.015;  //!< dx = dz, cm
   InterfaceMode interfaces = InterfaceMode::Conservative;
-  OutflowMode outflow = OutflowMode::Open;
+  OutflowMode outflow = OutflowMode::Auto;
   Limiter limiter = Limiter::Minmod;
   double cfl = 0.4;
   double markerSpacing = 0.5;  //!< target marker spacing in cells

@@ -39,10 +39,10 @@ struct Options {
   //! re-enters through an outflow side. A face there where the edge cell's phase moves inwards
   //! is a wall for that phase (no mass, tangential momentum or energy; the normal momentum of
   //! the contact pressure with the cell's mirror image), and marker lines beyond the side stay
-  //! put. By default the zero-gradient ghost lets the phase in and the lines beyond follow the
-  //! edge cells' velocity back in (variant 1 at 0.0075 cm took 0.16 of its 0.28 energy in
-  //! through its top side). Off because TvdCutOutflow's r-z scene then stops (open). The scene
-  //! key tvd.outflow = "no_reentry" sets it.
+  //! put. Without it the zero-gradient ghost lets the phase in and the lines beyond follow
+  //! the edge cells' velocity back in (variant 1 at 0.0075 cm took 0.16 of its 0.28 energy in
+  //! through its top side). The scene key tvd.outflow sets it ("auto", the default, and
+  //! "no_reentry"); a library user's Options keep it off unless set.
   bool closedOutflow = false;
   //! Cut-cell mode with closedOutflow, an experiment (off; the scene key tvd.outflow =
   //! "no_reentry_cut" sets both): the marker lines are cut at the outflow sides after every
