@@ -313,14 +313,14 @@ class CutLineSolver {
     if (L_.right == Side::Reflect) wall(n_ + 1);
   }
 
-  // Options::closedOutflow (an experiment, off; docs/tvd.md "Outflow sides: no re-entry"):
-  // an outflow side lets a phase out, never back in. The zero-gradient ghost copies the edge
-  // cell, so where the phase there moves into the domain its face flux carries mass in that no
-  // marker line holds (variant 1 at 0.0075 cm took 0.16 of its 0.28 energy in through its top
-  // side). With the option such a face is a wall for the phase: no mass, tangential momentum or
-  // energy, and the normal momentum of the contact pressure between the edge cell and its
-  // mirror image (p at rest, falling to 0 as the material pulls away, never tension); in r-z
-  // the hoop term takes the same face pressure.
+  // Options::closedOutflow (the scenes' default, tvd.outflow = "auto"; docs/tvd.md "Outflow sides:
+  // no re-entry"): an outflow side lets a phase out, never back in. The zero-gradient ghost copies
+  // the edge cell, so where the phase there moves into the domain its face flux carries mass in
+  // that no marker line holds (variant 1 at 0.0075 cm took 0.16 of its 0.28 energy in through its
+  // top side). With the option such a face is a wall for the phase: no mass, tangential momentum or
+  // energy, and the normal momentum of the contact pressure between the edge cell and its mirror
+  // image (p at rest, falling to 0 as the material pulls away, never tension); in r-z the hoop term
+  // takes the same face pressure.
   void noReentry(PhaseLine& ph, bool hoop) {
     if (!C_.closedOutflow) return;
     auto wallFlux = [&](int f, int j, bool right) {

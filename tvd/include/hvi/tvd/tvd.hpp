@@ -35,14 +35,14 @@ struct Options {
   //! positive). It removes the Whipple d = 1 cm run's floors but makes a thin-cell outflow scene
   //! collapse (docs/tvd.md, "The energy floor in cold compressed cells").
   bool keepColdStates = false;
-  //! Cut-cell mode, an experiment (off; docs/tvd.md "Outflow sides: no re-entry"): nothing
-  //! re-enters through an outflow side. A face there where the edge cell's phase moves inwards
-  //! is a wall for that phase (no mass, tangential momentum or energy; the normal momentum of
-  //! the contact pressure with the cell's mirror image), and marker lines beyond the side stay
-  //! put. Without it the zero-gradient ghost lets the phase in and the lines beyond follow
-  //! the edge cells' velocity back in (variant 1 at 0.0075 cm took 0.16 of its 0.28 energy in
-  //! through its top side). The scene key tvd.outflow sets it ("auto", the default, and
-  //! "no_reentry"); a library user's Options keep it off unless set.
+  //! Cut-cell mode (docs/tvd.md "Outflow sides: no re-entry"; off in Options, on in scenes):
+  //! nothing re-enters through an outflow side. A face there where the edge cell's phase moves
+  //! inwards is a wall for that phase (no mass, tangential momentum or energy; the normal momentum
+  //! of the contact pressure with the cell's mirror image), and marker lines beyond the side stay
+  //! put. Without it the zero-gradient ghost lets the phase in and the lines beyond follow the edge
+  //! cells' velocity back in (variant 1 at 0.0075 cm took 0.16 of its 0.28 energy in through its
+  //! top side). The scene key tvd.outflow sets it ("auto", the default, and "no_reentry"); a
+  //! library user's Options keep it off unless set.
   bool closedOutflow = false;
   //! Cut-cell mode with closedOutflow, an experiment (off; the scene key tvd.outflow =
   //! "no_reentry_cut" sets both): the marker lines are cut at the outflow sides after every
