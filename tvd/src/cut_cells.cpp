@@ -20,6 +20,10 @@ namespace hvi::tvd {
 void TvdSolver::initialiseCut(const cases::Scene& scene) {
   const int M = static_cast<int>(materials_.size());
   phases_.resize(M, grid_);
+  phases_.rho0.resize(static_cast<std::size_t>(M));
+  for (int p = 0; p < M; ++p)
+    phases_.rho0[static_cast<std::size_t>(p)] =
+        eos::referenceDensity(materials_[static_cast<std::size_t>(p)].eos);
   measurePhases();
   const long cells = grid_.cells();
   const auto n = static_cast<std::size_t>(cells);

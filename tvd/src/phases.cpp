@@ -448,8 +448,23 @@ long Phases::repair(const CellVolumes& volumes, const OldFractions& oldAlpha) {
           }
       if (best < 0) {
         if (vacated) {  // nowhere to go: the material keeps its last volume here
+          // A last volume at or below kPhaseAbsent is no volume: the placeholder of a cell the
+          // kernel opened (CutLineSolver::openFaces) that the lines never measured. Such an
+          // orphan takes its mass's volume at the reference density instead (within the cell's
+          // room beside the other phases), so that it does not sit at an absurd density whose
+          // sound speed holds the step (variant 1 at 0.00375 cm: 1.8e-6 g per cm^3 of cell at
+          // 1795 g/cm^3, the step 6e-5 us). Mass, momentum and energy stay; only the orphan's
+          // density, which no line defines, is chosen.
           const double a0 = oldAlpha.at(p, c);
-          a[cc] = a0 >= kPhaseAbsent ? a0 : kPhaseAbsent;
+          const auto pp = static_cast<std::size_t>(p);
+          if (a0 > kPhaseAbsent || pp >= rho0.size() || !(rho0[pp] > 0.0)) {
+            a[cc] = a0 >= kPhaseAbsent ? a0 : kPhaseAbsent;
+          } else {
+            double room = 1.0;
+            for (int o = 0; o < count; ++o)
+              if (o != p) room -= alpha[static_cast<std::size_t>(o)][cc];
+            a[cc] = std::max(kPhaseAbsent, std::min(s.rho[cc] / rho0[pp], room));
+          }
           ++orphans;
         } else if (fresh) {
           a[cc] = 0.0;  // a sliver the phase has no material near: not occupied

@@ -40,6 +40,9 @@ struct Phases {
   GridSpec grid;
   std::vector<Conserved> q;
   std::vector<std::vector<double>> alpha;
+  //! Per phase: its material's reference density, below which an orphan is never compressed
+  //! by the volume it keeps (repair).
+  std::vector<double> rho0;
   //! Further per-unit-cell-volume quantities of each phase that move with its mass wherever
   //! the repair moves it (effect strength: rho_p times the deviator and the plastic strain,
   //! docs/strength.md "TVD with interfaces"); carried[p] may be empty. Not owned.
