@@ -409,6 +409,12 @@ double OldFractions::at(int p, long c) const {
              : 0.0;
 }
 
+namespace {
+// An orphan whose last volume packs it beyond this many times its reference density has no
+// volume of the material (Phases::repair).
+constexpr double kOrphanCompression = 10.0;
+}  // namespace
+
 long Phases::repair(const CellVolumes& volumes, const OldFractions& oldAlpha) {
   const int nx = grid.nx, nz = grid.nz;
   long orphans = 0;
@@ -448,16 +454,20 @@ long Phases::repair(const CellVolumes& volumes, const OldFractions& oldAlpha) {
           }
       if (best < 0) {
         if (vacated) {  // nowhere to go: the material keeps its last volume here
-          // A last volume at or below kPhaseAbsent is no volume: the placeholder of a cell the
-          // kernel opened (CutLineSolver::openFaces) that the lines never measured. Such an
-          // orphan takes its mass's volume at the reference density instead (within the cell's
-          // room beside the other phases), so that it does not sit at an absurd density whose
-          // sound speed holds the step (variant 1 at 0.00375 cm: 1.8e-6 g per cm^3 of cell at
-          // 1795 g/cm^3, the step 6e-5 us). Mass, momentum and energy stay; only the orphan's
-          // density, which no line defines, is chosen.
+          // A last volume that packs the mass above ten times the material's reference
+          // density is no volume of the material (no shock here compresses a material beyond
+          // (gamma + 1) / (gamma - 1) ~ 4-5 times; Tillotson's and Mie-Gruneisen's fits end well
+          // below): the placeholder of a cell the kernel opened (CutLineSolver::openFaces) and no
+          // line measured. Such an orphan takes its mass's volume at the reference density
+          // instead, within the cell's room beside the other phases, so that it does not sit at
+          // an absurd density whose sound speed holds the step (variant 1 at 0.00375 cm: 1.8e-6 g
+          // per cm^3 of cell at 1795 g/cm^3, the step 6e-5 us). Mass, momentum and energy stay;
+          // only the orphan's density, which no line defines, is chosen.
           const double a0 = oldAlpha.at(p, c);
           const auto pp = static_cast<std::size_t>(p);
-          if (a0 > kPhaseAbsent || pp >= rho0.size() || !(rho0[pp] > 0.0)) {
+          const bool packed = pp < rho0.size() && rho0[pp] > 0.0 &&
+                              !(s.rho[cc] <= kOrphanCompression * rho0[pp] * a0);
+          if (!packed) {
             a[cc] = a0 >= kPhaseAbsent ? a0 : kPhaseAbsent;
           } else {
             double room = 1.0;
