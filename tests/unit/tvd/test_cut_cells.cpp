@@ -417,9 +417,10 @@ TEST(TvdCutCells, MovingSliverBelowTheVacuumDensityIsVacuum) {
 }
 
 // An orphan (material in a cell its lines no longer cover, no cell of its phase within two
-// rings to pool with) keeps its last volume (Phases::repair); a last volume of kPhaseAbsent is
-// the placeholder of a cell the kernel opened and no line measured, and such an orphan takes
-// its mass's volume at the reference density instead: at 0.00375 cm variant 1 held 1.8e-6 g
+// rings to pool with) keeps its last volume (Phases::repair); a last volume that packs the mass
+// above ten times the reference density is no volume of the material (here the placeholder
+// kPhaseAbsent of a cell the kernel opened and no line measured), and such an orphan takes its
+// mass's volume at the reference density instead: at 0.00375 cm variant 1 held 1.8e-6 g
 // per cm^3 of cell at kPhaseAbsent, a phase density of 1800 g/cm^3 whose sound speed held the
 // step at 6e-5 us. Mass, momentum and energy are untouched (only the density, which no line
 // defines, is chosen): exact. A one-phase 5 x 5 planar grid, the orphan in the middle; an
