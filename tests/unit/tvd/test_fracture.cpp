@@ -31,6 +31,21 @@ cases::Scene fractureScene(double xmin, double xmax, double zmin, double zmax, d
   return s;
 }
 
+// The study's Tillotson aluminium, elastic: the shear modulus of 6061-T6 (27.6 GPa) and a yield
+// above any stress of these tests; spall strength in Mbar.
+cases::Material elasticAluminium(double spallStrength,
+                                 strength::DamageModel damage = strength::NoDamage{}) {
+  cases::Material al = material("aluminium", eos::aluminiumStudy());
+  strength::Material sm;
+  sm.shearModulus = 0.276;
+  sm.yield = strength::ConstantYield{1.0};
+  sm.thermal.cv = 0.896e-5;
+  sm.spallStrength = spallStrength;
+  sm.damage = damage;
+  al.strength = sm;
+  return al;
+}
+
 // Symmetric flyer-plate spall, the SPH test's set-up (SphStrength.
 // SymmetricImpactSpallsWhereTheReleasesMeet): an elastic aluminium flyer of thickness d = 0.2 cm
 // at 200 m/s on an aluminium target of 2d, one material without marker lines (the two bodies one
@@ -56,14 +71,7 @@ Spall symmetricSpall(double spallGpa, strength::DamageModel damage = strength::N
   s.effects.erase(Effect::MaterialInterfaces);
   s.domain.boundary = {cases::Boundary::Wall, cases::Boundary::Wall, cases::Boundary::Outflow,
                        cases::Boundary::Outflow};
-  cases::Material al = material("aluminium", eos::aluminiumStudy());
-  strength::Material sm;  // elastic: G of 6061-T6 (27.6 GPa), a yield above any stress here
-  sm.shearModulus = 0.276;
-  sm.yield = strength::ConstantYield{1.0};
-  sm.thermal.cv = 0.896e-5;
-  sm.spallStrength = spallGpa * 0.01;  // GPa -> Mbar
-  sm.damage = damage;
-  al.strength = sm;
+  const cases::Material al = elasticAluminium(spallGpa * 0.01, damage);  // GPa -> Mbar
   s.materials = {al};
   const double rho0 = eos::referenceDensity(al.eos);
   s.bodies = {body("flyer", 0, cases::Rect{0.0, width, 0.0, d}, {rho0, {0.0, -v0}, 0.0}),
@@ -128,13 +136,7 @@ double meetingPlaneTension(bool phases, double cfl, bool wallMirror = true) {
   s.tvd.cfl = cfl;
   s.domain.boundary = {cases::Boundary::Wall, cases::Boundary::Wall, cases::Boundary::Outflow,
                        cases::Boundary::Outflow};
-  cases::Material al = material("aluminium", eos::aluminiumStudy());
-  strength::Material sm;  // elastic, as symmetricSpall's
-  sm.shearModulus = 0.276;
-  sm.yield = strength::ConstantYield{1.0};
-  sm.thermal.cv = 0.896e-5;
-  sm.spallStrength = 0.03;
-  al.strength = sm;
+  const cases::Material al = elasticAluminium(0.03);
   s.materials = {al};
   const double rho0 = eos::referenceDensity(al.eos);
   s.bodies = {body("flyer", 0, cases::Rect{0.0, width, 0.0, d}, {rho0, {0.0, -v0}, 0.0}),
@@ -194,13 +196,7 @@ double wallTension(bool phases, double cfl, bool mirror) {
   s.tvd.cfl = cfl;
   s.domain.boundary = {cases::Boundary::Wall, cases::Boundary::Wall, cases::Boundary::Wall,
                        cases::Boundary::Outflow};
-  cases::Material al = material("aluminium", eos::aluminiumStudy());
-  strength::Material sm;
-  sm.shearModulus = 0.276;
-  sm.yield = strength::ConstantYield{1.0};
-  sm.thermal.cv = 0.896e-5;
-  sm.spallStrength = 0.03;
-  al.strength = sm;
+  const cases::Material al = elasticAluminium(0.03);
   s.materials = {al};
   const double rho0 = eos::referenceDensity(al.eos);
   s.bodies = {body("plate", 0, cases::Rect{0.0, width, 0.0, d}, {rho0, {0.0, -v0}, 0.0})};
@@ -310,24 +306,22 @@ TEST(TvdFracture, MassAndEnergyAreConservedInRz) { checkConservation(Geometry::A
 // block at rest at 0.98 rho0 (P ~ -0.015 Mbar) fills a box of walls, so that every cell is away
 // from a free surface (where the failure rule holds), as one material without marker lines and
 // as a phase of the conservative interfaces (their own time-step scan; one body: a contact
-// between two bodies opens under tension, and the block would not stay at rest). With a spall strength of 0.001 Mbar every cell fails at the
-// first step's end and then sits at P = 0; with 1 Mbar none does. At rest the step is
+// between two bodies opens under tension, and the block would not stay at rest). With a spall
+// strength of 0.001 Mbar every cell fails at the first step's end and then sits at P = 0; with
+// 1 Mbar none does. At rest the step is
 // cfl dx / max c_L (intact) or cfl dx / max c (failed): the second steps differ by c_L / c
 // (1.24). The block stays at rest and uniform (walls, one state), so the ratio is exact to
 // round-off: bound 1e-12.
-double secondStepOfAStretchedBlock(bool phases, double spallStrength, double* damage) {
+struct SecondStep {
+  double dt = 0.0, dMin = 0.0, dMax = 0.0;  // the step (us) and the damage's range after it
+};
+SecondStep secondStepOfAStretchedBlock(bool phases, double spallStrength) {
   const double dx = 0.02;
   cases::Scene s = fractureScene(0.0, 0.2, 0.0, 0.2, dx);
   if (!phases) s.effects.erase(Effect::MaterialInterfaces);
   s.domain.boundary = {cases::Boundary::Wall, cases::Boundary::Wall, cases::Boundary::Wall,
                        cases::Boundary::Wall};
-  cases::Material al = material("aluminium", eos::aluminiumStudy());
-  strength::Material sm;  // elastic, as symmetricSpall's
-  sm.shearModulus = 0.276;
-  sm.yield = strength::ConstantYield{1.0};
-  sm.thermal.cv = 0.896e-5;
-  sm.spallStrength = spallStrength;
-  al.strength = sm;
+  const cases::Material al = elasticAluminium(spallStrength);
   s.materials = {al};
   const double rho = 0.98 * eos::referenceDensity(al.eos);
   s.bodies = {body("block", 0, cases::Rect{0.0, 0.2, 0.0, 0.2}, {rho, {}, 0.0})};
@@ -337,28 +331,27 @@ double secondStepOfAStretchedBlock(bool phases, double spallStrength, double* da
   solver.advance(1e9);
   const Snapshot snap = solver.snapshot();
   const Field& d = field(snap, "damage");
-  *damage = *std::min_element(d.data.begin(), d.data.end());
-  if (spallStrength >= 1.0) *damage = *std::max_element(d.data.begin(), d.data.end());
-  return solver.time() - t1;
+  const auto [lo, hi] = std::minmax_element(d.data.begin(), d.data.end());
+  return {solver.time() - t1, *lo, *hi};
 }
 
 TEST(TvdFracture, FailedMaterialStepsWithTheBulkSoundSpeed) {
   cases::Scene s = fractureScene(0.0, 1.0, 0.0, 1.0, 0.1);
-  s.materials = {material("aluminium", eos::aluminiumStudy())};
+  s.materials = {elasticAluminium(1.0)};
   const cases::Material al = cases::resolveMaterials(s).at(0);  // no tension cut-off
   const double rho = 0.98 * eos::referenceDensity(al.eos);
   const double c = eos::state(al.eos, rho, 0.0).soundSpeed;
-  const double expected = strength::longitudinalSoundSpeed(c, 0.276, rho) / c;
+  const double expected =
+      strength::longitudinalSoundSpeed(c, al.strength->shearModulus, rho) / c;
   for (bool phases : {false, true}) {
-    double dFailed = 0.0, dIntact = 1.0;
-    const double failed = secondStepOfAStretchedBlock(phases, 0.001, &dFailed);
-    const double intact = secondStepOfAStretchedBlock(phases, 1.0, &dIntact);
+    const SecondStep failed = secondStepOfAStretchedBlock(phases, 0.001);
+    const SecondStep intact = secondStepOfAStretchedBlock(phases, 1.0);
     std::printf("%s: second step failed %.6e us, intact %.6e us, ratio %.6f (c_L / c %.6f)\n",
-                phases ? "conservative interfaces" : "one material", failed, intact, failed / intact,
-                expected);
-    EXPECT_EQ(dFailed, 1.0);  // every cell failed
-    EXPECT_EQ(dIntact, 0.0);  // none did
-    EXPECT_NEAR(failed / intact, expected, 1e-12 * expected);
+                phases ? "conservative interfaces" : "one material", failed.dt, intact.dt,
+                failed.dt / intact.dt, expected);
+    EXPECT_EQ(failed.dMin, 1.0);  // every cell failed
+    EXPECT_EQ(intact.dMax, 0.0);  // none did
+    EXPECT_NEAR(failed.dt / intact.dt, expected, 1e-12 * expected);
   }
 }
 
