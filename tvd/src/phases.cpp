@@ -52,6 +52,7 @@ void Phases::resize(int phases, const GridSpec& g) {
     for (auto* v : {&s.rho, &s.mx, &s.mz, &s.E}) v->assign(cells, 0.0);
   alpha.assign(static_cast<std::size_t>(phases), std::vector<double>(cells, 0.0));
   volume = alpha;
+  rho0.assign(static_cast<std::size_t>(phases), 0.0);
   faces = FaceApertures{};
 }
 
@@ -465,8 +466,8 @@ long Phases::repair(const CellVolumes& volumes, const OldFractions& oldAlpha) {
           // only the orphan's density, which no line defines, is chosen.
           const double a0 = oldAlpha.at(p, c);
           const auto pp = static_cast<std::size_t>(p);
-          const bool packed = pp < rho0.size() && rho0[pp] > 0.0 &&
-                              !(s.rho[cc] <= kOrphanCompression * rho0[pp] * a0);
+          const bool packed =
+              rho0[pp] > 0.0 && !(s.rho[cc] <= kOrphanCompression * rho0[pp] * a0);
           if (!packed) {
             a[cc] = a0 >= kPhaseAbsent ? a0 : kPhaseAbsent;
           } else {

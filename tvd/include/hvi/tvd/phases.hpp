@@ -40,8 +40,8 @@ struct Phases {
   GridSpec grid;
   std::vector<Conserved> q;
   std::vector<std::vector<double>> alpha;
-  //! Per phase: its material's reference density, below which an orphan is never compressed
-  //! by the volume it keeps (repair).
+  //! Per phase: its material's reference density, for the volume of an orphan whose kept
+  //! volume packs it beyond any state of the material (repair); 0 (the rule off) until set.
   std::vector<double> rho0;
   //! Further per-unit-cell-volume quantities of each phase that move with its mass wherever
   //! the repair moves it (effect strength: rho_p times the deviator and the plastic strain,
