@@ -117,6 +117,13 @@ TEST(StrengthYield, ZerilliArmstrongByHand) {
   const auto* cu = hs::findPreset("copper_ofhc_za");
   ASSERT_NE(cu, nullptr);
   const auto& za = std::get<hs::ZerilliArmstrong>(cu->material.yield);
+  // The constants against a second source, Uintah's copper inputs (adiCuZA*.ups, ZAFlow.cc;
+  // docs/strength.md): C0 is the paper's split Delta sigma'_G + k l^(-1/2) = 46.5 + 5 * 3.7 MPa
+  // (grains of 73 um), C2 = B_0, C3 = alpha_0, C4 = alpha_1.
+  EXPECT_NEAR(za.c0, (46.5 + 5.0 * 3.7) * 1e-5, 1e-17);
+  EXPECT_DOUBLE_EQ(za.c2, 890e-5);
+  EXPECT_EQ(za.c3, 0.0028);
+  EXPECT_EQ(za.c4, 0.000115);
   EXPECT_NEAR(za.yield({.plasticStrain = 0.25, .strainRate = 1e-3, .temperature = 400.0}),
               2.645033e-3, 1e-9);
   // Quasi-static, 300 K: 65 + 890 * 0.5 * exp(-0.84) = 65 + 445 * 0.4317105 = 257.1112 MPa;
