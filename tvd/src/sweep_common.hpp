@@ -40,6 +40,18 @@ inline Side sideOf(cases::Boundary b) {
   return b == cases::Boundary::Outflow ? Side::Outflow : Side::Reflect;
 }
 
+//! Widens [a, b) to the domain edge when within two cells of it and says what lies beyond each
+//! end.
+inline void finishWindow(int N, Side low, Side high, int& a, int b, LineSetup& setup) {
+  if (a <= 2) a = 0;
+  if (b >= N - 2) b = N;
+  setup.n = b - a;
+  setup.left = a == 0 ? low : Side::Loaded;
+  setup.right = b == N ? high : Side::Loaded;
+  setup.leftEdge = a == 0;
+  setup.rightEdge = b == N;
+}
+
 //! The span of a line the kernel updates: from its first to its last occupied cell (the rest of
 //! a marker run's line is empty), widened to the domain edge when within two cells of it, and
 //! what lies beyond each end. False if no cell is occupied. Cells outside [lo, hi) are known to
@@ -53,13 +65,7 @@ inline bool lineWindow(int N, Side low, Side high, Occupied occupied, int& a, Li
   while (a < hi && !occupied(a)) ++a;
   if (a == hi) return false;
   while (!occupied(b - 1)) --b;
-  if (a <= 2) a = 0;
-  if (b >= N - 2) b = N;
-  setup.n = b - a;
-  setup.left = a == 0 ? low : Side::Loaded;
-  setup.right = b == N ? high : Side::Loaded;
-  setup.leftEdge = a == 0;
-  setup.rightEdge = b == N;
+  finishWindow(N, low, high, a, b, setup);
   return true;
 }
 

@@ -76,6 +76,24 @@ void TvdSolver::sweepCut(int direction, double dt) {
   const Side lowSide = detail::sideOf(domain_.boundary[xdir ? 0 : 2]);
   const Side highSide = detail::sideOf(domain_.boundary[xdir ? 1 : 3]);
 
+  // Each phase's first and last occupied position along every line, in one pass over the
+  // fractions in memory order (the rows [rowLo, rowHi) hold every occupied cell). The kernel
+  // changes fractions only on its own line, so these stay valid through the sweep.
+  int* span = phaseSpan_.data();  // [(line * P + p) * 2 + 0 / 1]
+  std::fill_n(span, 2L * lines * P, -1);
+  for (int p = 0; p < P; ++p) {
+    const double* al = phases_.alpha[static_cast<std::size_t>(p)].data();
+    for (int k = phases_.rowLo; k < phases_.rowHi; ++k) {
+      const double* row = al + static_cast<long>(k) * nx;
+      for (int i = 0; i < nx; ++i) {
+        if (!(row[i] >= kPhaseAbsent)) continue;
+        int* s = span + 2 * (static_cast<long>(xdir ? k : i) * P + p);
+        if (s[0] < 0) s[0] = xdir ? i : k;  // positions come in increasing order per line
+        s[1] = xdir ? i : k;
+      }
+    }
+  }
+
 #pragma omp parallel num_threads(threads_) if (grid_.cells() >= kParallelCells)
   {
 #ifdef _OPENMP
@@ -95,24 +113,21 @@ void TvdSolver::sweepCut(int direction, double dt) {
       if (xdir && (line < phases_.rowLo || line >= phases_.rowHi)) continue;
       const long base = xdir ? static_cast<long>(line) * nx : line;
       auto at = [&](int pos) { return base + pos * step; };
-      auto occupied = [&](int pos) {
-        for (int p = 0; p < P; ++p)
-          if (phases_.alpha[static_cast<std::size_t>(p)][static_cast<std::size_t>(at(pos))] >=
-              kPhaseAbsent)
-            return true;
-        return false;
-      };
-      int a = 0;
-      detail::LineSetup setup;
-      const int lo = xdir ? 0 : phases_.rowLo, hi = xdir ? N : phases_.rowHi;
+      const int* lineSpan = span + 2L * line * P;
+      int first = N, last = -1;
+      for (int p = 0; p < P; ++p)
+        if (lineSpan[2 * p] >= 0) {
+          first = std::min(first, lineSpan[2 * p]);
+          last = std::max(last, lineSpan[2 * p + 1]);
+        }
+      if (last < 0) continue;
       // One cell beyond the occupied ones on either side: where an interface lies on the
       // window's end face, the kernel opens that cell to the phase (CutLineSolver::openFaces).
-      auto reach = [&](int pos) {
-        return occupied(pos) || (pos > lo && occupied(pos - 1)) ||
-               (pos + 1 < hi && occupied(pos + 1));
-      };
-      if (!detail::lineWindow(N, lowSide, highSide, reach, a, setup, lo, hi)) continue;
-      const int n = setup.n, b = a + n;
+      const int lo = xdir ? 0 : phases_.rowLo, hi = xdir ? N : phases_.rowHi;
+      int a = std::max(first - 1, lo);
+      detail::LineSetup setup;
+      detail::finishWindow(N, lowSide, highSide, a, std::min(last + 2, hi), setup);
+      const int n = setup.n;
 
       // Apertures of the line's own faces, side `side`, as a strided array over the face index
       // along the line (x faces of row `line`, or z faces of column `line`).
@@ -141,13 +156,8 @@ void TvdSolver::sweepCut(int direction, double dt) {
       };
       for (int p = 0; p < P; ++p) {
         detail::PhaseLine& ph = W.phase[static_cast<std::size_t>(p)];
-        // A phase the line does not touch (none of its cells, ghosts included) is skipped.
-        {
-          const double* al = phases_.alpha[static_cast<std::size_t>(p)].data();
-          const int lo = std::max(a - 2, 0), hi = std::min(b + 2, N);
-          ph.active = false;
-          for (int pos = lo; pos < hi && !ph.active; ++pos) ph.active = al[at(pos)] >= kPhaseAbsent;
-        }
+        // A phase the line does not touch (none of its cells; the window holds all) is skipped.
+        ph.active = lineSpan[2 * p] >= 0;
         if (!ph.active) continue;
         const Conserved& Q = phases_.q[static_cast<std::size_t>(p)];
         const double* arrays[4] = {Q.rho.data(), xdir ? Q.mx.data() : Q.mz.data(),

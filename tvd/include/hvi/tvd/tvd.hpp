@@ -225,6 +225,10 @@ class TvdSolver final : public Solver {
   long orphans_ = 0;       // cut-cell mode: cells kept off the geometry
   std::vector<double> phaseOutflow_;  // cut-cell mode: each phase's mass out through outflow sides
   std::vector<double> phaseEdge_;     // cut-cell mode: the same per line and sweep (line order)
+  // Cut-cell mode: each phase's first and last occupied position along each line of the sweep
+  // (-1 where none), from one pass over the fractions in memory order: the line windows
+  // without a strided search from both ends of every line.
+  std::vector<int> phaseSpan_;
   // Cut-cell mode: the working fractions equal alpha (the first sweep of a step reads alpha and
   // writes phases_.volume; every occupied cell lies in its line's window, so all are written).
   bool volumeFresh_ = true;
