@@ -99,12 +99,11 @@ void fitTogether(const double* const* from, double* const* to, int P, long lo, l
     double* t1 = to[1];
 #pragma omp parallel for schedule(static) if (hi - lo >= kParallelCells)
     for (long i = lo; i < hi; ++i) {
-      double a0 = f0[i], a1 = f1[i];
-      const double total = 0.0 + a0 + a1;
-      if (total > 1.0) {
-        a0 /= total;
-        a1 /= total;
-      }
+      // x / 1 is x exactly: the division by a select keeps the loop free of branches (it
+      // vectorises) with the values of the scaling only where the sum exceeds 1.
+      const double total = 0.0 + f0[i] + f1[i];
+      const double scale = total > 1.0 ? total : 1.0;
+      const double a0 = f0[i] / scale, a1 = f1[i] / scale;
       t0[i] = a0 < absent ? 0.0 : a0;
       t1[i] = a1 < absent ? 0.0 : a1;
     }
