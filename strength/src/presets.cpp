@@ -91,9 +91,10 @@ Material jcTungsten() {
 
 Material zaCopper() {
   // Zerilli and Armstrong (1987) OFHC copper, fcc form: C0 65 MPa, C2 890 MPa, C3 0.0028 /K,
-  // C4 0.000115 /K (eps_dot in 1/s); C0 is their Delta sigma'_G + k l^(-1/2) = 46.5 + 5 * 3.7 MPa
-  // (73 um grains), the split Uintah's copper inputs give (docs/strength.md). G, c_v and T_melt are copper_ofhc's, so the two presets
-  // differ in the yield law alone. No damage: the paper gives none.
+  // C4 0.000115 /K (eps_dot in 1/s); C0 is their Delta sigma'_G + k l^(-1/2) = 46.5 + 5 * 3.7
+  // MPa (73 um grains), the split Uintah's copper inputs give (docs/strength.md). G, c_v and
+  // T_melt are copper_ofhc's, so the two presets differ in the yield law alone. No damage: the
+  // paper gives none.
   Material m = jcCopper();
   m.yield = ZerilliArmstrong{.c0 = 65.0 * kMPa,
                              .c2 = 890.0 * kMPa,
