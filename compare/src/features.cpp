@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -25,6 +26,42 @@ int resolve(const std::vector<std::string>& names, const std::string& name, int 
 
 void updateMin(std::optional<double>& v, double x) { v = v ? std::min(*v, x) : x; }
 void updateMax(std::optional<double>& v, double x) { v = v ? std::max(*v, x) : x; }
+
+// The distance from the axis within which the share `q` of the columns' mass lies, each column's
+// mass spread evenly over its span of distance [|x - axis| - dx/2, |x - axis| + dx/2] (clipped at
+// 0: a column the axis crosses), so the result moves continuously with the mass. Columns on both
+// sides of a planar axis overlap in distance: their densities add (a sweep over the spans' ends).
+// Empty without mass.
+std::optional<double> massRadius(const std::vector<double>& columnMass, const Resampled& r,
+                                 double axisX, double q) {
+  struct Event {
+    double at, density;  // mass per unit distance that starts (> 0) or ends (< 0) here
+  };
+  std::vector<Event> events;
+  double total = 0.0;
+  for (int i = 0; i < r.grid.nx; ++i) {
+    const double m = columnMass[static_cast<std::size_t>(i)];
+    if (!(m > 0.0)) continue;
+    const double ax = std::abs(r.xCentre(i) - axisX), half = 0.5 * r.grid.dx;
+    const double lo = std::max(0.0, ax - half), hi = ax + half;
+    events.push_back({lo, m / (hi - lo)});
+    events.push_back({hi, -m / (hi - lo)});
+    total += m;
+  }
+  if (!(total > 0.0)) return std::nullopt;
+  std::sort(events.begin(), events.end(),
+            [](const Event& a, const Event& b) { return a.at < b.at; });
+  const double target = q * total;
+  double below = 0.0, density = 0.0, at = events.front().at;
+  for (const Event& e : events) {
+    const double piece = density * (e.at - at);
+    if (density > 0.0 && below + piece >= target) return at + (target - below) / density;
+    below += piece;
+    density += e.density;
+    at = e.at;
+  }
+  return at;
+}
 
 }  // namespace
 
@@ -62,6 +99,8 @@ Features measureFeatures(const Resampled& r, const FeatureConfig& cfg) {
   if (k0 > k1) k0 = k1 = static_cast<int>(std::floor((0.5 * (cfg.shieldZMin + cfg.shieldZMax) -
                                                        g.z0) / g.dz));
 
+  // Mass beyond the rear face per column (bubbleRadius90).
+  std::vector<double> columnMass(static_cast<std::size_t>(g.nx), 0.0);
   Features f;
   f.time = r.time;
   f.cellSize = std::max(g.dx, g.dz);
@@ -92,6 +131,8 @@ Features measureFeatures(const Resampled& r, const FeatureConfig& cfg) {
         if (s < 0) updateMin(f.cloudLeadingEdgeZ, edge);
         else updateMax(f.cloudLeadingEdgeZ, edge);
         updateMax(f.bubbleRadius, ax + 0.5 * g.dx);
+        if (r.density[c] > 0.0)
+          columnMass[static_cast<std::size_t>(i)] += r.density[c] * r.cellVolume(i);
       }
       if (part[c] == striker) {
         updateMin(f.strikerZMin, z - 0.5 * g.dz);
@@ -105,6 +146,7 @@ Features measureFeatures(const Resampled& r, const FeatureConfig& cfg) {
     }
   }
   if (strikerMass > 0.0) f.strikerCentroidZ = strikerMoment / strikerMass;
+  f.bubbleRadius90 = massRadius(columnMass, r, cfg.axisX, 0.9);
   return f;
 }
 
@@ -131,6 +173,7 @@ nlohmann::json toJson(const Features& f) {
           {"hole_radius", opt(f.holeRadius)},
           {"cloud_leading_edge_z", opt(f.cloudLeadingEdgeZ)},
           {"bubble_radius", opt(f.bubbleRadius)},
+          {"bubble_radius_90", opt(f.bubbleRadius90)},
           {"striker_z_min", opt(f.strikerZMin)},
           {"striker_z_max", opt(f.strikerZMax)},
           {"striker_centroid_z", opt(f.strikerCentroidZ)},
@@ -153,6 +196,7 @@ nlohmann::json differenceJson(const Features& a, const Features& b) {
           {"hole_radius", diff(a.holeRadius, b.holeRadius)},
           {"cloud_leading_edge_z", diff(a.cloudLeadingEdgeZ, b.cloudLeadingEdgeZ)},
           {"bubble_radius", diff(a.bubbleRadius, b.bubbleRadius)},
+          {"bubble_radius_90", diff(a.bubbleRadius90, b.bubbleRadius90)},
           {"striker_z_min", diff(a.strikerZMin, b.strikerZMin)},
           {"striker_z_max", diff(a.strikerZMax, b.strikerZMax)},
           {"striker_centroid_z", diff(a.strikerCentroidZ, b.strikerCentroidZ)},

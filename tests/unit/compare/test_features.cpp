@@ -125,6 +125,42 @@ TEST(Features, ReversedImpactDirectionMirrorsTheFeatures) {
   EXPECT_NEAR(*f.bubbleRadius, kBubble, f.cellSize);
 }
 
+// bubble_radius_90: the radius holding 90 % of the mass beyond the rear face. A uniform cloud
+// below the plate, r <= 1 cm (a cylinder in r-z: mass within r goes as r^2, so r90 = sqrt(0.9);
+// a slab |x| <= 1 planar: r90 = 0.9), and one fragment cell far out at r = 1.8 cm. The fragment
+// moves the extreme bubble_radius to its outer face; the mass radius only by its mass share.
+// Columns' faces lie on the cloud's edge; within a column the mass is spread evenly, i.e. r^2 is
+// interpolated linearly over one column, which in r-z is off by at most dx^2 / (8 r) = 1.3e-5 cm
+// at r = 0.95 (bound 1e-4); planar it is exact but for round-off.
+TEST(Features, MassRadiusIsSetByTheMassNotByAFragment) {
+  auto cloud = [](Vec2 p, double xLo) {
+    if (p.z >= 8.0 && p.z <= 8.155 && std::abs(p.x) >= 1.2) return 1;                 // plate
+    if (p.z >= 7.0 && p.z <= 7.5 && p.x >= xLo && p.x <= 1.0) return 1;              // cloud
+    if (p.z >= 7.2 && p.z <= 7.21 && std::abs(std::abs(p.x) - 1.805) < 0.004) return 1;  // fragment
+    return -1;
+  };
+  for (const bool rz : {true, false}) {
+    const double x0 = rz ? 0.0 : -2.5;
+    Scene2 s{[=](Vec2 p) { return cloud({rz ? p.x : std::abs(p.x), p.z}, 0.0) >= 0 ? 0 : -1; }};
+    s.object = [=](Vec2 p) { return cloud({rz ? p.x : std::abs(p.x), p.z}, 0.0); };
+    const GridSpec g{rz ? 250 : 500, 140, x0, 6.9, 0.01, 0.01};
+    const Features f = measureFeatures(
+        test::gridOf(s, g, rz ? Geometry::Axisymmetric : Geometry::Planar), config());
+    ASSERT_TRUE(f.bubbleRadius && f.bubbleRadius90);
+    EXPECT_NEAR(*f.bubbleRadius, 1.81, 1e-9);
+    // Cloud mass per radian (r-z) or per cm of depth (planar), and the fragment's (one cell, or
+    // two mirrored ones planar); the cloud holds all mass within r <= 1.
+    const double cloudMass = rz ? 2.79 * 0.5 * 0.5 : 2.79 * 2.0 * 0.5;
+    const double fragment = rz ? 2.79 * 1.805 * 1e-4 : 2.79 * 2e-4;
+    const double share = 0.9 * (cloudMass + fragment) / cloudMass;
+    if (rz)
+      EXPECT_NEAR(*f.bubbleRadius90, std::sqrt(share), 1e-4);
+    else
+      EXPECT_NEAR(*f.bubbleRadius90, share, 1e-9);
+    EXPECT_LT(*f.bubbleRadius90, 0.95);
+  }
+}
+
 TEST(Features, IntactShieldHasNoHoleAndNoCloud) {
   // t = 0: a sphere resting on an unbroken plate. The hole radius is 0 (shield at the axis) and
   // nothing lies beyond the rear face.
@@ -140,6 +176,7 @@ TEST(Features, IntactShieldHasNoHoleAndNoCloud) {
   EXPECT_EQ(*f.holeRadius, 0.0);
   EXPECT_FALSE(f.cloudLeadingEdgeZ);
   EXPECT_FALSE(f.bubbleRadius);
+  EXPECT_FALSE(f.bubbleRadius90);
   EXPECT_NEAR(*f.strikerZMin, 8.155, f.cellSize);
   // The sphere's top is not on a lattice face: the particles represent it only to dx / 2, and the
   // grid adds up to one cell.

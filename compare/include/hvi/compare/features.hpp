@@ -42,7 +42,13 @@ struct Features {
   //! along the impact direction): the leading edge of the debris cloud.
   std::optional<double> cloudLeadingEdgeZ;
   //! Largest |x - axisX| (outer face) of material beyond the rear face: the bubble's radius.
+  //! An extreme value: one fragment sets it, so it need not converge with resolution (the
+  //! study's feature, kept).
   std::optional<double> bubbleRadius;
+  //! The radius |x - axisX| within which 90 % of the mass beyond the rear face lies (each
+  //! column's mass spread evenly over its width, so the value is continuous): the cloud's
+  //! lateral extent by its mass, which a fragment cannot set.
+  std::optional<double> bubbleRadius90;
   //! Striker remnant: extreme faces along z and its mass-weighted centroid.
   std::optional<double> strikerZMin, strikerZMax, strikerCentroidZ;
   //! Peak density and the centre of the cell where it is reached.
