@@ -45,9 +45,10 @@ struct Features {
   //! An extreme value: one fragment sets it, so it need not converge with resolution (the
   //! study's feature, kept).
   std::optional<double> bubbleRadius;
-  //! The radius |x - axisX| within which 90 % of the mass beyond the rear face lies (each
-  //! column's mass spread evenly over its width, so the value is continuous): the cloud's
-  //! lateral extent by its mass, which a fragment cannot set.
+  //! The radius |x - axisX| within which 90 % of the mass more than a cell beyond the rear face
+  //! lies (each column's mass spread evenly over its width, so the value is continuous): the
+  //! cloud's lateral extent by its mass, which a fragment cannot set and the reading's spill of
+  //! the plate into the next row does not reach.
   std::optional<double> bubbleRadius90;
   //! Striker remnant: extreme faces along z and its mass-weighted centroid.
   std::optional<double> strikerZMin, strikerZMax, strikerCentroidZ;
