@@ -87,9 +87,9 @@ std::string formatTable(const Report& r) {
     const json fa = toJson(*r.featuresA), fb = toJson(*r.featuresB);
     const json fd = differenceJson(*r.featuresA, *r.featuresB);
     o << fmt::format("features [cm, g/cm^3]  {:>10} {:>10} {:>10}\n", "A", "B", "B - A");
-    for (const char* key : {"hole_radius", "cloud_leading_edge_z", "bubble_radius",
-                            "bubble_radius_90", "striker_z_min", "striker_z_max", "striker_centroid_z",
-                            "peak_density"}) {
+    for (const char* key :
+         {"hole_radius", "cloud_leading_edge_z", "bubble_radius", "bubble_radius_90",
+          "striker_z_min", "striker_z_max", "striker_centroid_z", "peak_density"}) {
       auto cell = [](const json& v) {
         return v.is_null() ? std::string("-") : fmt::format("{:.4f}", v.get<double>());
       };
