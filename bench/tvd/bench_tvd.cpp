@@ -159,12 +159,17 @@ double cutLayerCells(const tvd::TvdSolver& solver) {
   return length > 0.0 ? static_cast<double>(cut) * solver.grid().dx / length : 0.0;
 }
 
+// --marker-velocity mixture: tvd::Options::ownBodyVelocity off (the lines' earlier motion).
+bool g_ownBodyVelocity = true;
+
 double runVariant1(double tEnd, bool markers, cases::InterfaceMode mode) {
   cases::Scene scene = variant1();
   if (!markers) scene.effects.erase(cases::Effect::MaterialInterfaces);
   scene.tvd.interfaces = mode;
   std::printf("-- variant 1, %s interfaces\n", std::string(cases::toString(mode)).c_str());
-  tvd::TvdSolver solver(scene);
+  tvd::Options options;
+  options.ownBodyVelocity = g_ownBodyVelocity;
+  tvd::TvdSolver solver(scene, options);
   const Totals t0 = solver.totals();
   const auto c0 = Clock::now();
   const double cpu0 = cpuSeconds();
@@ -221,7 +226,13 @@ int main(int argc, char** argv) {
                  "variant 1's interface mode: whole_cell, conservative, or both side by side "
                  "(prints the wall-time ratio)")
       ->check(CLI::IsMember({"whole_cell", "conservative", "both"}));
+  std::string markerVelocity = "own";
+  app.add_option("--marker-velocity", markerVelocity,
+                 "conservative mode: each line reads its own body's cells (own, the default) or "
+                 "every cell (mixture, the lines' motion before 2026-12-04)")
+      ->check(CLI::IsMember({"own", "mixture"}));
   CLI11_PARSE(app, argc, argv);
+  g_ownBodyVelocity = markerVelocity == "own";
   if (!doThroughput && !doVariant1 && !doStrength) doThroughput = doVariant1 = true;
   try {
     if (doStrength) strengthCost(h, steps);

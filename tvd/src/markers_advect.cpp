@@ -16,6 +16,9 @@ namespace {
 //! used; on the r-z axis side the radial component is continued oddly (ghost = -vx), which
 //! makes vx vanish on the axis and keeps linear fields v = a r exact; so is the normal
 //! component across a side in `walls` (xmin, xmax, zmin, zmax).
+// `own` at or above this: the body fills the cell (Phases::measure's round-off).
+constexpr double kOwnFull = 1.0 - 1e-9;
+
 struct VelocityField {
   const GridSpec& g;
   const double* vx;
@@ -25,7 +28,7 @@ struct VelocityField {
 
   static double lerp(double a, double b, double f) { return a + f * (b - a); }
 
-  Vec2 operator()(Vec2 p) const {
+  Vec2 operator()(Vec2 p, const double* own) const {
     const double s = (p.x - g.x0) / g.dx - 0.5;
     const double r = (p.z - g.z0) / g.dz - 0.5;
     const double fi = std::floor(s), fk = std::floor(r);
@@ -36,15 +39,33 @@ struct VelocityField {
     const int i0 = std::clamp(i, 0, g.nx - 1), i1 = std::clamp(i + 1, 0, g.nx - 1);
     const int k0 = std::clamp(k, 0, g.nz - 1), k1 = std::clamp(k + 1, 0, g.nz - 1);
     const long r0 = static_cast<long>(k0) * g.nx, r1 = static_cast<long>(k1) * g.nx;
+    long c00 = r0 + i0, c10 = r0 + i1, c01 = r1 + i0, c11 = r1 + i1;
+    if (own != nullptr) {
+      // Where the body fills a cell of the stencil, only the cells that hold it: a cell of
+      // another body's free surface or of vacuum takes the value of its row partner, else its
+      // column partner, else the diagonal one that does (a constant field stays exact). A
+      // stencil the body fills nowhere (a sliver, spray) reads every cell, as before.
+      const bool m00 = own[c00] > 0.0, m10 = own[c10] > 0.0, m01 = own[c01] > 0.0,
+                 m11 = own[c11] > 0.0;
+      const bool filled = own[c00] >= kOwnFull || own[c10] >= kOwnFull ||
+                          own[c01] >= kOwnFull || own[c11] >= kOwnFull;
+      if (filled && !(m00 && m10 && m01 && m11)) {
+        const long a00 = c00, a10 = c10, a01 = c01, a11 = c11;
+        if (!m00) c00 = m10 ? a10 : m01 ? a01 : a11;
+        if (!m10) c10 = m00 ? a00 : m11 ? a11 : a01;
+        if (!m01) c01 = m11 ? a11 : m00 ? a00 : a10;
+        if (!m11) c11 = m01 ? a01 : m10 ? a10 : a00;
+      }
+    }
     // Odd ghosts of the normal component across the axis and the walls.
     const double sx = ((axis || walls[0]) && i < 0) ? -1.0 : 1.0;
     const double sxHi = (walls[1] && i >= g.nx - 1) ? -1.0 : 1.0;
     const double sz = (walls[2] && k < 0) ? -1.0 : 1.0;
     const double szHi = (walls[3] && k >= g.nz - 1) ? -1.0 : 1.0;
-    const double ux0 = lerp(sx * vx[r0 + i0], sxHi * vx[r0 + i1], fx);
-    const double ux1 = lerp(sx * vx[r1 + i0], sxHi * vx[r1 + i1], fx);
-    const double uz0 = sz * lerp(vz[r0 + i0], vz[r0 + i1], fx);
-    const double uz1 = szHi * lerp(vz[r1 + i0], vz[r1 + i1], fx);
+    const double ux0 = lerp(sx * vx[c00], sxHi * vx[c10], fx);
+    const double ux1 = lerp(sx * vx[c01], sxHi * vx[c11], fx);
+    const double uz0 = sz * lerp(vz[c00], vz[c10], fx);
+    const double uz1 = szHi * lerp(vz[c01], vz[c11], fx);
     return {lerp(ux0, ux1, fz), lerp(uz0, uz1, fz)};
   }
 };
@@ -52,7 +73,8 @@ struct VelocityField {
 }  // namespace
 
 void MarkerSet::advect(const GridSpec& grid, const double* vx, const double* vz, double dt,
-                       std::array<bool, 4> walls, std::array<bool, 4> open, bool oddWalls) {
+                       std::array<bool, 4> walls, std::array<bool, 4> open, bool oddWalls,
+                       const std::vector<std::vector<double>>* own) {
   const bool rz = geometry_ == Geometry::Axisymmetric;
   const bool anyOpen = open[0] || open[1] || open[2] || open[3];
   const double x0 = grid.x0, x1 = grid.x0 + grid.nx * grid.dx;
@@ -81,16 +103,20 @@ void MarkerSet::advect(const GridSpec& grid, const double* vx, const double* vz,
   for (std::size_t l = 0; l < lines_.size(); ++l) {
     auto& pts = lines_[l].points;
     const long n = static_cast<long>(pts.size());
+    const auto object = static_cast<std::size_t>(lines_[l].object);
+    const double* mine =
+        own != nullptr && object < own->size() && !(*own)[object].empty() ? (*own)[object].data()
+                                                                           : nullptr;
 #pragma omp parallel for schedule(static) if (n > 2048)
     for (long j = 0; j < n; ++j) {
       const Vec2 p = pts[static_cast<std::size_t>(j)];
       const bool onAxis = rz && p.x == 0.0;
       if (beyond(p)) continue;
       // Explicit midpoint rule along the path in the (time-centred) velocity field.
-      Vec2 half = p + (0.5 * dt) * v(p);
+      Vec2 half = p + (0.5 * dt) * v(p, mine);
       if (rz) half.x = onAxis ? 0.0 : std::max(half.x, 0.0);
       if (anyWall) atWall(p, half);
-      Vec2 q = p + dt * v(half);
+      Vec2 q = p + dt * v(half, mine);
       if (rz) q.x = onAxis ? 0.0 : std::max(q.x, 0.0);
       if (anyWall) atWall(p, q);
       if (std::isfinite(q.x) && std::isfinite(q.z))

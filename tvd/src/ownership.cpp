@@ -154,7 +154,10 @@ void Ownership::advanceLines(const Conserved& U, double dt, int rowLo, int rowHi
   const GridSpec& g = cells_.grid;
   centredVelocity(U, dt, rowLo, rowHi);
   extendIntoVacuum(2, rowLo, rowHi);
-  markers_.advect(g, midX(), midZ(), dt, walls_, open_);
+  // The cut-cell mode: each line reads its own body's cells (the fractions lent at the
+  // step's start, Phases::alpha); the whole-cell mode reads every cell, as the study did.
+  markers_.advect(g, midX(), midZ(), dt, walls_, open_, false,
+                  cutCells_ && ownVelocity_ ? &fraction_ : nullptr);
   markers_.clipToSides(g, cut_);  // none in the whole-cell mode (setCutSides)
   markers_.redistribute(g);
 }

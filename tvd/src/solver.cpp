@@ -31,6 +31,9 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
   // re-entry").
   if (scene.tvd.outflow != cases::OutflowMode::Open) options_.closedOutflow = true;
   if (scene.tvd.outflow == cases::OutflowMode::NoReentryCut) options_.cutOutflowLines = true;
+  // The open rule is the earlier default: kept with the earlier marker motion (its thin edge
+  // cells, re-entered through the side, collapse the time step when a line reads them alone).
+  if (scene.tvd.outflow == cases::OutflowMode::Open) options_.ownBodyVelocity = false;
   setUpGrid(scene);
   setUpMaterials(scene);
 #ifdef _OPENMP
@@ -58,6 +61,7 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
     std::array<bool, 4> open{};
     ownership_.setCutCells(cut_);
     ownership_.setMarkerWalls(options_.markerWalls);
+    ownership_.setOwnVelocity(options_.ownBodyVelocity);
     ownership_.setUp(scene, cellVolumes_, objectMaterial_, bodyStates_,
                      static_cast<int>(materials_.size()), threads_);
     // docs/tvd.md, "Outflow sides: no re-entry" (Options::closedOutflow) and "Cutting the lines
@@ -247,6 +251,43 @@ double TvdSolver::stableTimeStep() const {
   return s > 0.0 ? params_.cfl * grid_.dx / s : std::numeric_limits<double>::infinity();
 }
 
+// The buffers lent to the marker step hold, until the lines' new fractions overwrite them, the
+// cells each line may read its velocity from (MarkerSet::advect's `own`, nonzero): those where
+// its body is present at the step's start and holds at least the time-step density at its end,
+// and those that other bodies fill (a contact: both lines read the same cells there, so they
+// stay together). A cell below that density sets no time step and its velocity is bounded only
+// by the clamp (Ownership::centredVelocity); a partly empty cell of another body is that body's
+// free surface, whose velocity is not this body's (docs/tvd.md "Marker velocity: each line its
+// own body's").
+void TvdSolver::markOwnCells() {
+  const long c0 = phases_.cellLo(), c1 = phases_.cellHi();
+  const int P = phases_.count;
+  std::vector<double*> alpha(static_cast<std::size_t>(P));
+  std::vector<const double*> rho(static_cast<std::size_t>(P));
+  for (int p = 0; p < P; ++p) {
+    alpha[static_cast<std::size_t>(p)] = phases_.alpha[static_cast<std::size_t>(p)].data();
+    rho[static_cast<std::size_t>(p)] = phases_.q[static_cast<std::size_t>(p)].rho.data();
+  }
+  const double* rhoStep = rhoStep_.data();
+  // A cell is full when its live phases cover it to the fit's round-off (Phases::measure).
+  constexpr double kFull = 1.0 - 1e-9;
+#pragma omp parallel for schedule(static) num_threads(threads_) if (c1 - c0 >= kParallelCells)
+  for (long c = c0; c < c1; ++c) {
+    double live = 0.0;
+    for (int p = 0; p < P; ++p) {
+      double& a = alpha[static_cast<std::size_t>(p)][c];
+      if (!(a > 0.0)) continue;
+      if (!(rho[static_cast<std::size_t>(p)][c] >= rhoStep[p] * a))
+        a = 0.0;
+      else
+        live += a;
+    }
+    // (A phase alone in its cell has a >= kFull already.)
+    if (live >= kFull)
+      for (int p = 0; p < P; ++p) alpha[static_cast<std::size_t>(p)][c] = 1.0;
+  }
+}
+
 double TvdSolver::advance(double tStop) {
   if (!(tStop > time_)) return 0.0;
   long worst = -1;
@@ -281,6 +322,7 @@ double TvdSolver::advance(double tStop) {
     // The old fractions, for the repair, kept where nonzero; the lines' new fractions go into
     // their buffers (zero outside the rows, as move requires), which measurePhases takes back.
     alphaOld_.keep(phases_);
+    if (options_.ownBodyVelocity) markOwnCells();
     ownership_.lendFractions(std::move(phases_.alpha));
     phases_.alpha.clear();
     if (phases_.count == 1) {

@@ -62,6 +62,9 @@ class Ownership {
   [[nodiscard]] bool cutsLines() const { return cut_[0] || cut_[1] || cut_[2] || cut_[3]; }
   //! Cut cells: markers on a wall stay on it, none crosses one (Options::markerWalls).
   void setMarkerWalls(bool on) { markerWalls_ = on; }
+  //! Cut-cell mode: each line reads its own body's cells' velocity where the body fills one
+  //! (MarkerSet::advect's `own`; Options::ownBodyVelocity).
+  void setOwnVelocity(bool on) { ownVelocity_ = on; }
   //! The marker step of the cut-cell mode: moves and redistributes the lines, rebuilds the
   //! owner array and the fractions (into the buffers lent, lendFractions); the flow state is
   //! not touched. The material
@@ -149,6 +152,7 @@ class Ownership {
   std::array<bool, 4> open_{};  // cut-cell mode: the outflow sides (MarkerSet::advect)
   std::array<bool, 4> cut_{};   // cut-cell mode: lines cut there (MarkerSet::clipToSides)
   bool markerWalls_ = true;
+  bool ownVelocity_ = true;
   std::array<bool, 4> walls_{};  //!< xmin, xmax, zmin, zmax hold the markers (cut cells)
   std::vector<std::vector<double>> fraction_;  // cut-cell mode: object fractions per cell
 };

@@ -57,6 +57,12 @@ struct Options {
   //! pulled the phases off the walls, docs/strength.md "TVD fracture"). false: the earlier
   //! motion with the field clamped to the outermost cell centres.
   bool markerWalls = true;
+  //! Cut-cell mode: where a body fills a cell of a marker's interpolation stencil, its line
+  //! moves with the velocity of the stencil's cells that hold the body only (docs/tvd.md
+  //! "Marker velocity: each line its own body's"; MarkerSet::advect's `own`). false, and always
+  //! with tvd.outflow = "open": every cell's, vacuum cells taking their neighbours' mean, so that
+  //! a body's free surface moved with a body a cell away (before 2026-12-04).
+  bool ownBodyVelocity = true;
 };
 
 //! Eulerian TVD solver (the scheme is specified in docs/tvd.md):
@@ -161,6 +167,7 @@ class TvdSolver final : public Solver {
   static void addState(Conserved& U, std::size_t c, const Ownership::ObjectState& b,
                        double weight);
   void measurePhases();  // phases_ geometry from the marker lines (cut-cell mode)
+  void markOwnCells();   // cut-cell mode: the cells each line reads its velocity from
   void dropEmptiedLines();  // cut-cell mode: the lines of bodies that have all left
   double signalSpeedCut(double* vx, double* vz, long* worstCell) const;
   // Cut cells: each velocity component of a phase cell below the time-step density limited to
