@@ -288,6 +288,48 @@ void TvdSolver::markOwnCells() {
   }
 }
 
+// No re-entry through outflow sides: a phase in an edge cell that moves out through the side
+// and holds less of the cell than leaves in one step at its own speed (alpha h < u_n dt) is
+// released through the side now, booked as outflow (mass, momentum, energy, and the phase's own
+// outflow). Its lines lie beyond the side (they stay there), so what is left in the cell is a
+// sliver the swept volumes of the last step did not take, and the side, a wall for material
+// moving inwards, would otherwise hold it while the line's fraction squeezes it (docs/tvd.md
+// "Slivers at outflow sides").
+void TvdSolver::releaseSlivers(double dt) {
+  const int nx = grid_.nx, nz = grid_.nz;
+  for (int side = 0; side < 4; ++side) {
+    if (domain_.boundary[static_cast<std::size_t>(side)] != cases::Boundary::Outflow) continue;
+    const bool xSide = side < 2;
+    const double sign = side % 2 == 0 ? -1.0 : 1.0;  // outward normal component
+    const double h = xSide ? grid_.dx : grid_.dz;
+    const int count = xSide ? nz : nx;
+    const int edge = side == 0 ? 0 : side == 1 ? nx - 1 : side == 2 ? 0 : nz - 1;
+    if (!xSide && (edge < phases_.rowLo || edge >= phases_.rowHi)) continue;
+    for (int j = 0; j < count; ++j) {
+      if (xSide && (j < phases_.rowLo || j >= phases_.rowHi)) continue;
+      const long c = xSide ? static_cast<long>(j) * nx + edge : static_cast<long>(edge) * nx + j;
+      const auto cc = static_cast<std::size_t>(c);
+      for (int p = 0; p < phases_.count; ++p) {
+        Conserved& q = phases_.q[static_cast<std::size_t>(p)];
+        const double m = q.rho[cc];
+        if (!(m > 0.0)) continue;
+        const double un = sign * (xSide ? q.mx[cc] : q.mz[cc]) / m;
+        const double a = phases_.alpha[static_cast<std::size_t>(p)][cc];
+        if (!(un > 0.0) || !(a * h < un * dt)) continue;
+        const double vol = cellVolumes_(c);
+        Budget b{m * vol, q.mx[cc] * vol, q.mz[cc] * vol, q.E[cc] * vol};
+        ledger_.outflow += b;
+        phaseOutflow_[static_cast<std::size_t>(p)] += m * vol;
+        q.rho[cc] = q.mx[cc] = q.mz[cc] = q.E[cc] = 0.0;
+        phases_.alpha[static_cast<std::size_t>(p)][cc] = 0.0;
+        if (static_cast<std::size_t>(p) < phases_.carried.size())
+          for (std::vector<double>* f : phases_.carried[static_cast<std::size_t>(p)])
+            if (f != nullptr && cc < f->size()) (*f)[cc] = 0.0;
+      }
+    }
+  }
+}
+
 double TvdSolver::advance(double tStop) {
   if (!(tStop > time_)) return 0.0;
   long worst = -1;
@@ -333,6 +375,7 @@ double TvdSolver::advance(double tStop) {
     }
     measurePhases();
     orphans_ += phases_.repair(cellVolumes_, alphaOld_);
+    if (options_.closedOutflow && options_.releaseSlivers) releaseSlivers(dt);
     volumeFresh_ = true;  // the first sweep of the next step starts from alpha
     phases_.mixture(U_);
   } else if (step_ % 2 == 0) {

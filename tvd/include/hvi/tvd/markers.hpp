@@ -91,9 +91,10 @@ class MarkerSet {
   //! (the cut-cell mode, docs/tvd.md "Outflow sides: no re-entry"); none open by default.
   //! `own` (optional, one array per object, cells of `grid`): where own[o][c] > 0 the cell
   //! holds object o, and where it is 1 (to round-off) o fills it. Where o fills a cell of a
-  //! line's interpolation stencil, the line reads the velocity only of the stencil's cells that
-  //! hold o (the others take the value of a neighbour in the stencil that does; docs/tvd.md
-  //! "Marker velocity: each line its own body's"); elsewhere, or with no `own`, every cell.
+  //! line's interpolation stencil or of the ring of cells around it, the line reads the
+  //! velocity only of the stencil's cells that hold o (the others take the value of a neighbour
+  //! in the stencil that does; docs/tvd.md "Marker velocity: each line its own body's");
+  //! elsewhere, or with no `own`, every cell.
   void advect(const GridSpec& grid, const double* vx, const double* vz, double dt,
               std::array<bool, 4> walls = {}, std::array<bool, 4> open = {},
               bool oddWalls = false, const std::vector<std::vector<double>>* own = nullptr);

@@ -63,6 +63,11 @@ struct Options {
   //! with tvd.outflow = "open": every cell's, vacuum cells taking their neighbours' mean, so that
   //! a body's free surface moved with a body a cell away (before 2026-12-04).
   bool ownBodyVelocity = true;
+  //! Cut-cell mode with closedOutflow: a phase in an edge cell of an outflow side that moves
+  //! out and holds less of the cell than leaves in one step at its speed is released through
+  //! the side, booked as outflow (docs/tvd.md "Slivers at outflow sides"). false: it stays (the
+  //! side holds it as a wall while its lines, beyond the side, give it a vanishing fraction).
+  bool releaseSlivers = true;
 };
 
 //! Eulerian TVD solver (the scheme is specified in docs/tvd.md):
@@ -168,6 +173,7 @@ class TvdSolver final : public Solver {
                        double weight);
   void measurePhases();  // phases_ geometry from the marker lines (cut-cell mode)
   void markOwnCells();   // cut-cell mode: the cells each line reads its velocity from
+  void releaseSlivers(double dt);  // cut-cell mode, no re-entry: slivers leave through the side
   void dropEmptiedLines();  // cut-cell mode: the lines of bodies that have all left
   double signalSpeedCut(double* vx, double* vz, long* worstCell) const;
   // Cut cells: each velocity component of a phase cell below the time-step density limited to
