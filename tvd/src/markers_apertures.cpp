@@ -16,9 +16,9 @@
 namespace hvi::tvd {
 namespace {
 
-//! Below this many faces per object the per-line sweep runs on one thread (as kParallelCells of
-//! the solver: a thread team costs more than the work).
-constexpr long kParallelFaces = 16384;
+//! Below this many faces per object the per-line sweep runs on one thread (as kParallelStream
+//! of the solver: a thread team's wake-up costs more than clearing and writing the faces).
+constexpr long kParallelFaces = 1L << 20;
 
 //! One family of grid lines in cell units: lines at across = 0 .. lines-1, each cut into faces
 //! [f, f+1] along it, f = 0 .. faces-1; face (line, f) of a side is out[side * sideStride +
@@ -155,12 +155,15 @@ void MarkerSet::faceApertures(const GridSpec& grid, FaceApertures& out, int rowL
       const long rowWidth = fam.vertical ? nx + 1 : nx;
       const long r0 = rowLo * rowWidth;
       const long r1 = (fam.vertical ? rowHi : std::min(rowHi + 1, nz + 1)) * rowWidth;
-      for (int side = 0; side < 2; ++side) {
-        double* s = base + side * fam.sideStride;
-#pragma omp parallel for schedule(static) if (work >= kParallelFaces)
-        for (long f = r0; f < r1; ++f) s[f] = 0.0;
-      }
-#pragma omp parallel for schedule(static) if (work >= kParallelFaces)
+      // One parallel region for the clearing and the lines (the barrier between them is the
+      // clearing loop's own): fewer thread wake-ups per step than a region per loop.
+      double* s0 = base;
+      double* s1 = base + fam.sideStride;
+#pragma omp parallel if (work >= kParallelFaces)
+      {
+#pragma omp for schedule(static)
+      for (long f = r0; f < r1; ++f) s0[f] = s1[f] = 0.0;
+#pragma omp for schedule(static)
       for (int line = 0; line < fam.lines; ++line) {
         LineCrossing* b = cross + (line == 0 ? 0 : start[line - 1]);
         LineCrossing* e = cross + start[line];
@@ -185,6 +188,7 @@ void MarkerSet::faceApertures(const GridSpec& grid, FaceApertures& out, int rowL
           // A closed line crosses every line as often each way (the half-open rule classifies
           // each vertex as before or after the line), so w ends at 0.
         }
+      }
       }
     }
   }

@@ -10,6 +10,7 @@
 
 #include "hvi/tvd/marker_geometry.hpp"
 #include "hvi/tvd/markers.hpp"
+#include "hvi/tvd/state.hpp"
 
 namespace hvi::tvd {
 namespace {
@@ -162,7 +163,7 @@ void MarkerSet::rasterizeInto(const GridSpec& grid, std::vector<int>& owner,
     best_.resize(ncell);
     total_.resize(ncell);
   }
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (cells >= kParallelStream)
   for (long c = 0; c < cells; ++c) {
     owner[c] = -1;
     if (scratch) {
@@ -179,7 +180,7 @@ void MarkerSet::rasterizeInto(const GridSpec& grid, std::vector<int>& owner,
     if (acc_.size() < need) acc_.resize(need, 0.0);  // acc_ is all zero between uses
     accumulate(lines_, obj, grid, b, acc_);
     double* frac = fraction ? fraction[obj] : nullptr;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (static_cast<long>(b.k1 - b.k0) * stride >= kParallelStream)
     for (int k = b.k0; k < b.k1; ++k) {
       double* row = acc_.data() + (k - b.k0) * stride;
       double s = 0.0;
@@ -207,7 +208,7 @@ void MarkerSet::rasterizeInto(const GridSpec& grid, std::vector<int>& owner,
     // The same sums and comparisons, object by object, as the scratch arrays take them: an
     // object adds an exact 0 outside its box, which no comparison takes.
     const int objects = objects_;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (cells >= kParallelStream)
     for (long c = 0; c < cells; ++c) {
       double best = 0.0, total = 0.0;
       int o = -1;
@@ -224,7 +225,7 @@ void MarkerSet::rasterizeInto(const GridSpec& grid, std::vector<int>& owner,
     return;
   }
   if (!normals) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (cells >= kParallelStream)
     for (long c = 0; c < cells; ++c)
       if (owner[c] >= 0 && 1.0 - total_[c] > best_[c] + kTie) owner[c] = -1;
     return;
@@ -233,7 +234,7 @@ void MarkerSet::rasterizeInto(const GridSpec& grid, std::vector<int>& owner,
   normal.resize(ncell);
   // total_ is free once the owners are known: it holds the marker length inside each cell.
   double* cutLength = total_.data();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (cells >= kParallelStream)
   for (long c = 0; c < cells; ++c) {
     if (owner[c] >= 0 && 1.0 - total_[c] > best_[c] + kTie) owner[c] = -1;
     normal[c] = Vec2{};
@@ -266,7 +267,7 @@ void MarkerSet::rasterizeInto(const GridSpec& grid, std::vector<int>& owner,
       });
     }
   }
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (cells >= kParallelStream)
   for (long c = 0; c < cells; ++c) {
     const double len = norm(normal[c]);
     // Normals that cancel (both faces of a sliver thinner than the cell) give no direction.

@@ -94,7 +94,7 @@ void Ownership::centredVelocity(const Conserved& U, double dt, int rowLo, int ro
   const int* owner = owner_.data();
   const double vmax =
       dt > 0.0 ? std::min(cells_.grid.dx, cells_.grid.dz) / dt : std::numeric_limits<double>::max();
-#pragma omp parallel for schedule(static) num_threads(threads_) if (c1 - c0 >= kParallelCells)
+#pragma omp parallel for schedule(static) num_threads(threads_) if (c1 - c0 >= kParallelStream)
   for (long c = c0; c < c1; ++c) {
     if ((!cutCells_ && owner[c] < 0) || !(rho[c] > 0.0)) {
       vx[c] = vz[c] = 0.0;

@@ -97,7 +97,7 @@ void fitTogether(const double* const* from, double* const* to, int P, long lo, l
     const double* f1 = from[1];
     double* t0 = to[0];
     double* t1 = to[1];
-#pragma omp parallel for schedule(static) if (hi - lo >= kParallelCells)
+#pragma omp parallel for schedule(static) if (hi - lo >= kParallelStream)
     for (long i = lo; i < hi; ++i) {
       // x / 1 is x exactly: the division by a select keeps the loop free of branches (it
       // vectorises) with the values of the scaling only where the sum exceeds 1.
@@ -110,7 +110,7 @@ void fitTogether(const double* const* from, double* const* to, int P, long lo, l
     return;
   }
   if (P > kMax || P < 2) {  // one phase never exceeds 1; many: the plain loops
-#pragma omp parallel for schedule(static) if (hi - lo >= kParallelCells)
+#pragma omp parallel for schedule(static) if (hi - lo >= kParallelStream)
     for (long i = lo; i < hi; ++i) {
       double total = 0.0;
       for (int p = 0; p < P; ++p) total += from[p][i];
@@ -122,7 +122,7 @@ void fitTogether(const double* const* from, double* const* to, int P, long lo, l
     }
     return;
   }
-#pragma omp parallel for schedule(static) if (hi - lo >= kParallelCells)
+#pragma omp parallel for schedule(static) if (hi - lo >= kParallelStream)
   for (long i = lo; i < hi; ++i) {
     double v[kMax];
     double total = 0.0;
@@ -173,7 +173,13 @@ void Phases::mixture(Conserved& U, bool energy) const {
   const long c0 = cellLo(), c1 = cellHi();
   const long n = c1 - c0;
   double* out[4] = {U.rho.data(), U.mx.data(), U.mz.data(), U.E.data()};
-  for (int k = 0; k < (energy ? 4 : 3); ++k) {
+  // One parallel region: each loop is statically scheduled over the same cells, so a thread
+  // gets the same cells in every loop and needs no barrier between them (nowait); the sums per
+  // cell keep their order, phase by phase (the same bits as a region per loop, which woke the
+  // threads 2 x 4 times per call: with a passive wait policy that cost more than the copies).
+  const int components = energy ? 4 : 3;
+#pragma omp parallel if (n >= kParallelStream)
+  for (int k = 0; k < components; ++k) {
     // Component by component, phase by phase: contiguous streams (the phases are few).
     double* o = out[k];
     for (int p = 0; p < count; ++p) {
@@ -183,10 +189,10 @@ void Phases::mixture(Conserved& U, bool energy) const {
                          : k == 2 ? s.mz.data()
                                   : s.E.data();
       if (p == 0) {
-#pragma omp parallel for schedule(static) if (n >= kParallelCells)
+#pragma omp for schedule(static) nowait
         for (long c = c0; c < c1; ++c) o[c] = in[c];
       } else {
-#pragma omp parallel for schedule(static) if (n >= kParallelCells)
+#pragma omp for schedule(static) nowait
         for (long c = c0; c < c1; ++c) o[c] += in[c];
       }
     }
@@ -204,7 +210,7 @@ void findCells(long lo, long hi, std::vector<unsigned char>& mask, std::vector<l
                Need need) {
   mask.resize(static_cast<std::size_t>(hi));
   unsigned char* m = mask.data();
-#pragma omp parallel for schedule(static) if (hi - lo >= kParallelCells)
+#pragma omp parallel for schedule(static) if (hi - lo >= kParallelStream)
   for (long c = lo; c < hi; ++c) m[c] = need(c) ? 1 : 0;
   out.clear();
   for (long c = lo; c < hi; ++c)

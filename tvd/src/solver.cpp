@@ -271,7 +271,7 @@ void TvdSolver::markOwnCells() {
   const double* rhoStep = rhoStep_.data();
   // A cell is full when its live phases cover it to the fit's round-off (Phases::measure).
   constexpr double kFull = 1.0 - 1e-9;
-#pragma omp parallel for schedule(static) num_threads(threads_) if (c1 - c0 >= kParallelCells)
+#pragma omp parallel for schedule(static) num_threads(threads_) if (c1 - c0 >= kParallelStream)
   for (long c = c0; c < c1; ++c) {
     double live = 0.0;
     for (int p = 0; p < P; ++p) {

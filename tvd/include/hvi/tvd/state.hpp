@@ -59,5 +59,11 @@ struct Ledger {
 //! Grids smaller than this run their loops on one thread: a parallel region's barrier costs
 //! more than the work (and much more when the cores are shared).
 inline constexpr long kParallelCells = 16384;
+//! Cells below which a streaming pass (a copy or sum of a few arrays, a mask, a fit of the
+//! fractions: a few operations per cell) runs on one thread. Such a pass over the ~1e5 cells of
+//! variant 1's rows takes tens of microseconds, about what waking the threads costs with a
+//! passive wait policy on two cores; with ~50 parallel regions per step the conservative mode
+//! gained nothing from a second thread (docs/performance.md, "TVD: thread wake-ups").
+inline constexpr long kParallelStream = 1L << 20;
 
 }  // namespace hvi::tvd
