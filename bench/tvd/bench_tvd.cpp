@@ -161,9 +161,12 @@ double cutLayerCells(const tvd::TvdSolver& solver) {
 
 // --marker-velocity mixture: tvd::Options::ownBodyVelocity off (the lines' earlier motion).
 bool g_ownBodyVelocity = true;
+// --v1-cell: variant 1's cell size (cm; default 0.015, the study's).
+double g_v1Cell = 0.015;
 
 double runVariant1(double tEnd, bool markers, cases::InterfaceMode mode) {
   cases::Scene scene = variant1();
+  scene.tvd.cellSize = g_v1Cell;
   if (!markers) scene.effects.erase(cases::Effect::MaterialInterfaces);
   scene.tvd.interfaces = mode;
   std::printf("-- variant 1, %s interfaces\n", std::string(cases::toString(mode)).c_str());
@@ -226,6 +229,7 @@ int main(int argc, char** argv) {
                  "variant 1's interface mode: whole_cell, conservative, or both side by side "
                  "(prints the wall-time ratio)")
       ->check(CLI::IsMember({"whole_cell", "conservative", "both"}));
+  app.add_option("--v1-cell", g_v1Cell, "variant 1's cell size, cm (default 0.015)");
   std::string markerVelocity = "own";
   app.add_option("--marker-velocity", markerVelocity,
                  "conservative mode: each line reads its own body's cells (own, the default) or "
