@@ -288,9 +288,10 @@ void TvdSolver::markOwnCells() {
   }
 }
 
-// No re-entry through outflow sides: a phase in an edge cell that moves out through the side
-// and holds less of the cell than leaves in one step at its own speed (alpha h < u_n dt) is
-// released through the side now, booked as outflow (mass, momentum, energy, and the phase's own
+// No re-entry through outflow sides: a phase in an edge cell that moves out through the side,
+// holds less of the cell than leaves in one step at its own speed (alpha h < u_n dt) and no
+// longer reaches the cell's inner face (its trailing line has passed it) is released through
+// the side now, booked as outflow (mass, momentum, energy, and the phase's own
 // outflow). Its lines lie beyond the side (they stay there), so what is left in the cell is a
 // sliver the swept volumes of the last step did not take, and the side, a wall for material
 // moving inwards, would otherwise hold it while the line's fraction squeezes it (docs/tvd.md
@@ -316,6 +317,13 @@ void TvdSolver::releaseSlivers(double dt) {
         const double un = sign * (xSide ? q.mx[cc] : q.mz[cc]) / m;
         const double a = phases_.alpha[static_cast<std::size_t>(p)][cc];
         if (!(un > 0.0) || !(a * h < un * dt)) continue;
+        // Only a trailing sliver: the phase no longer reaches the cell's inner face (a cut
+        // cell of a surface lying along the side, a plate's top sliding out, still does, and
+        // refilled from inside it would drain the body faster than it moves).
+        const int in = side == 0 ? 1 : side == 1 ? nx - 1 : side == 2 ? 1 : nz - 1;
+        const double inner = xSide ? phases_.apertureX(p, side == 0 ? 0 : 1, in, j)
+                                   : phases_.apertureZ(p, side == 2 ? 0 : 1, j, in);
+        if (inner > 0.0) continue;
         const double vol = cellVolumes_(c);
         Budget b{m * vol, q.mx[cc] * vol, q.mz[cc] * vol, q.E[cc] * vol};
         ledger_.outflow += b;
