@@ -233,7 +233,8 @@ int main(int argc, char** argv) {
   std::string markerVelocity = "own";
   app.add_option("--marker-velocity", markerVelocity,
                  "conservative mode: each line reads its own body's cells (own, the default) or "
-                 "every cell (mixture, the lines' motion before 2026-12-04)")
+                 "every cell (mixture, the lines' motion before 2026-12-04; the sliver release at "
+                 "outflow sides stays on)")
       ->check(CLI::IsMember({"own", "mixture"}));
   CLI11_PARSE(app, argc, argv);
   g_ownBodyVelocity = markerVelocity == "own";
