@@ -16,9 +16,6 @@ namespace {
 //! used; on the r-z axis side the radial component is continued oddly (ghost = -vx), which
 //! makes vx vanish on the axis and keeps linear fields v = a r exact; so is the normal
 //! component across a side in `walls` (xmin, xmax, zmin, zmax).
-// `own` at or above this: the body fills the cell (Phases::measure's round-off).
-constexpr double kOwnFull = 1.0 - 1e-9;
-
 struct VelocityField {
   const GridSpec& g;
   const double* vx;
@@ -49,14 +46,16 @@ struct VelocityField {
                  m11 = own[c11] > 0.0;
       // Filled: the body fills a cell of the stencil or of the ring around it (a marker on a
       // body's surface whose stencil holds only the cut cell and vacuum is still next to it).
+      // Looked for only where a cell of the stencil is not the body's.
       bool filled = false;
-      for (int kk = std::max(k - 1, 0); kk <= std::min(k + 2, g.nz - 1) && !filled; ++kk)
-        for (int ii = std::max(i - 1, 0); ii <= std::min(i + 2, g.nx - 1); ++ii)
-          if (own[static_cast<long>(kk) * g.nx + ii] >= kOwnFull) {
-            filled = true;
-            break;
-          }
-      if (filled && !(m00 && m10 && m01 && m11)) {
+      if (!(m00 && m10 && m01 && m11))
+        for (int kk = std::max(k - 1, 0); kk <= std::min(k + 2, g.nz - 1) && !filled; ++kk)
+          for (int ii = std::max(i - 1, 0); ii <= std::min(i + 2, g.nx - 1); ++ii)
+            if (own[static_cast<long>(kk) * g.nx + ii] >= kOwnFilled) {
+              filled = true;
+              break;
+            }
+      if (filled) {
         const long a00 = c00, a10 = c10, a01 = c01, a11 = c11;
         if (!m00) c00 = m10 ? a10 : m01 ? a01 : a11;
         if (!m10) c10 = m00 ? a00 : m11 ? a11 : a01;
@@ -111,9 +110,9 @@ void MarkerSet::advect(const GridSpec& grid, const double* vx, const double* vz,
     auto& pts = lines_[l].points;
     const long n = static_cast<long>(pts.size());
     const auto object = static_cast<std::size_t>(lines_[l].object);
-    const double* mine =
-        own != nullptr && object < own->size() && !(*own)[object].empty() ? (*own)[object].data()
-                                                                           : nullptr;
+    const double* mine = own != nullptr && object < own->size() && !(*own)[object].empty()
+                             ? (*own)[object].data()
+                             : nullptr;
 #pragma omp parallel for schedule(static) if (n > 2048)
     for (long j = 0; j < n; ++j) {
       const Vec2 p = pts[static_cast<std::size_t>(j)];

@@ -12,13 +12,10 @@
 
 #include "hvi/tvd/marker_geometry.hpp"
 #include "hvi/tvd/markers.hpp"
+#include "hvi/tvd/state.hpp"
 
 namespace hvi::tvd {
 namespace {
-
-//! Below this many faces per object the per-line sweep runs on one thread (as kParallelStream
-//! of the solver: a thread team's wake-up costs more than clearing and writing the faces).
-constexpr long kParallelFaces = 1L << 20;
 
 //! One family of grid lines in cell units: lines at across = 0 .. lines-1, each cut into faces
 //! [f, f+1] along it, f = 0 .. faces-1; face (line, f) of a side is out[side * sideStride +
@@ -159,36 +156,36 @@ void MarkerSet::faceApertures(const GridSpec& grid, FaceApertures& out, int rowL
       // clearing loop's own): fewer thread wake-ups per step than a region per loop.
       double* s0 = base;
       double* s1 = base + fam.sideStride;
-#pragma omp parallel if (work >= kParallelFaces)
+#pragma omp parallel if (work >= kParallelStream)
       {
 #pragma omp for schedule(static)
-      for (long f = r0; f < r1; ++f) s0[f] = s1[f] = 0.0;
+        for (long f = r0; f < r1; ++f) s0[f] = s1[f] = 0.0;
 #pragma omp for schedule(static)
-      for (int line = 0; line < fam.lines; ++line) {
-        LineCrossing* b = cross + (line == 0 ? 0 : start[line - 1]);
-        LineCrossing* e = cross + start[line];
-        // A total order (equal keys are identical crossings), so the result does not depend on
-        // the sort's internal order or on the thread count.
-        std::sort(b, e, [](const LineCrossing& u, const LineCrossing& v) {
-          if (u.at != v.at) return u.at < v.at;
-          if (u.winding != v.winding) return u.winding < v.winding;
-          return u.sides < v.sides;
-        });
-        for (int side = 0; side < 2; ++side) {
-          double* a = base + side * fam.sideStride + line * fam.lineStride;
-          int w = 0;
-          double runStart = 0.0;
-          for (const LineCrossing* c = b; c != e; ++c) {
-            if (!((c->sides >> side) & 1)) continue;
-            const int next = w + c->winding;
-            if (w == 0 && next != 0) runStart = c->at;
-            if (w != 0 && next == 0) addRun(runStart, c->at, fam, a);
-            w = next;
+        for (int line = 0; line < fam.lines; ++line) {
+          LineCrossing* b = cross + (line == 0 ? 0 : start[line - 1]);
+          LineCrossing* e = cross + start[line];
+          // A total order (equal keys are identical crossings), so the result does not depend on
+          // the sort's internal order or on the thread count.
+          std::sort(b, e, [](const LineCrossing& u, const LineCrossing& v) {
+            if (u.at != v.at) return u.at < v.at;
+            if (u.winding != v.winding) return u.winding < v.winding;
+            return u.sides < v.sides;
+          });
+          for (int side = 0; side < 2; ++side) {
+            double* a = base + side * fam.sideStride + line * fam.lineStride;
+            int w = 0;
+            double runStart = 0.0;
+            for (const LineCrossing* c = b; c != e; ++c) {
+              if (!((c->sides >> side) & 1)) continue;
+              const int next = w + c->winding;
+              if (w == 0 && next != 0) runStart = c->at;
+              if (w != 0 && next == 0) addRun(runStart, c->at, fam, a);
+              w = next;
+            }
+            // A closed line crosses every line as often each way (the half-open rule classifies
+            // each vertex as before or after the line), so w ends at 0.
           }
-          // A closed line crosses every line as often each way (the half-open rule classifies
-          // each vertex as before or after the line), so w ends at 0.
         }
-      }
       }
     }
   }

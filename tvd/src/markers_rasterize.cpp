@@ -180,7 +180,8 @@ void MarkerSet::rasterizeInto(const GridSpec& grid, std::vector<int>& owner,
     if (acc_.size() < need) acc_.resize(need, 0.0);  // acc_ is all zero between uses
     accumulate(lines_, obj, grid, b, acc_);
     double* frac = fraction ? fraction[obj] : nullptr;
-#pragma omp parallel for schedule(static) if (static_cast<long>(b.k1 - b.k0) * stride >= kParallelStream)
+    const long boxCells = static_cast<long>(b.k1 - b.k0) * stride;
+#pragma omp parallel for schedule(static) if (boxCells >= kParallelStream)
     for (int k = b.k0; k < b.k1; ++k) {
       double* row = acc_.data() + (k - b.k0) * stride;
       double s = 0.0;

@@ -269,8 +269,7 @@ void TvdSolver::markOwnCells() {
     rho[static_cast<std::size_t>(p)] = phases_.q[static_cast<std::size_t>(p)].rho.data();
   }
   const double* rhoStep = rhoStep_.data();
-  // A cell is full when its live phases cover it to the fit's round-off (Phases::measure).
-  constexpr double kFull = 1.0 - 1e-9;
+  // A cell is full when its live phases cover it to the fit's round-off (kOwnFilled).
 #pragma omp parallel for schedule(static) num_threads(threads_) if (c1 - c0 >= kParallelStream)
   for (long c = c0; c < c1; ++c) {
     double live = 0.0;
@@ -282,8 +281,8 @@ void TvdSolver::markOwnCells() {
       else
         live += a;
     }
-    // (A phase alone in its cell has a >= kFull already.)
-    if (live >= kFull)
+    // (A phase alone in its cell has a >= kOwnFilled already.)
+    if (live >= kOwnFilled)
       for (int p = 0; p < P; ++p) alpha[static_cast<std::size_t>(p)][c] = 1.0;
   }
 }
@@ -305,6 +304,10 @@ void TvdSolver::releaseSlivers(double dt) {
     const double h = xSide ? grid_.dx : grid_.dz;
     const int count = xSide ? nz : nx;
     const int edge = side == 0 ? 0 : side == 1 ? nx - 1 : side == 2 ? 0 : nz - 1;
+    // The edge cells' inner face (its index along the normal) and the aperture seen from the
+    // edge cell: the limit from below on a low side's face, from above on a high side's.
+    const int inner = side % 2 == 0 ? 1 : edge;
+    const int from = side % 2 == 0 ? 0 : 1;
     if (!xSide && (edge < phases_.rowLo || edge >= phases_.rowHi)) continue;
     for (int j = 0; j < count; ++j) {
       if (xSide && (j < phases_.rowLo || j >= phases_.rowHi)) continue;
@@ -320,10 +323,9 @@ void TvdSolver::releaseSlivers(double dt) {
         // Only a trailing sliver: the phase no longer reaches the cell's inner face (a cut
         // cell of a surface lying along the side, a plate's top sliding out, still does, and
         // refilled from inside it would drain the body faster than it moves).
-        const int in = side == 0 ? 1 : side == 1 ? nx - 1 : side == 2 ? 1 : nz - 1;
-        const double inner = xSide ? phases_.apertureX(p, side == 0 ? 0 : 1, in, j)
-                                   : phases_.apertureZ(p, side == 2 ? 0 : 1, j, in);
-        if (inner > 0.0) continue;
+        const double aperture =
+            xSide ? phases_.apertureX(p, from, inner, j) : phases_.apertureZ(p, from, j, inner);
+        if (aperture > 0.0) continue;
         const double vol = cellVolumes_(c);
         Budget b{m * vol, q.mx[cc] * vol, q.mz[cc] * vol, q.E[cc] * vol};
         ledger_.outflow += b;

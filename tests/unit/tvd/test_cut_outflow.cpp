@@ -315,11 +315,11 @@ TEST(TvdCutOutflow, ABodyLeavingThroughASideLeavesEntirely) {
         "%.2e; kept: %ld steps, left %.2e, densest %.3f rho0\n",
         name, on.steps, on.left, on.closes, on.densest, on.energyGain, off.steps, off.left,
         off.densest);
-    EXPECT_EQ(on.left, 0.0) << name;                      // nothing is left behind
-    EXPECT_LT(std::abs(on.closes), 1e-12) << name;        // all of it booked as outflow
-    EXPECT_LT(on.densest, 1.0 + 1e-9) << name;            // never compressed: it moves freely
-    EXPECT_LT(on.energyGain, 1e-12) << name;              // the release makes no energy
-    EXPECT_GT(off.left, 1e-4) << name;                    // the test tells the two apart
+    EXPECT_EQ(on.left, 0.0) << name;                // nothing is left behind
+    EXPECT_LT(std::abs(on.closes), 1e-12) << name;  // all of it booked as outflow
+    EXPECT_LT(on.densest, 1.0 + 1e-9) << name;      // never compressed: it moves freely
+    EXPECT_LT(on.energyGain, 1e-12) << name;        // the release makes no energy
+    EXPECT_GT(off.left, 1e-4) << name;              // the test tells the two apart
   }
 }
 

@@ -33,7 +33,8 @@ Untouched approach(Geometry g, bool own) {
   if (rz) s.domain.boundary[0] = cases::Boundary::Axis;
   s.materials.push_back(material("aluminium", eos::aluminiumStudy()));
   s.materials.push_back(material("striker", eos::aluminiumStudy()));
-  s.bodies.push_back(body("plate", 0, cases::Rect{rz ? 0.0 : -0.5, 0.5, -0.2, 0.0}, {2.79, {}, 0.0}));
+  s.bodies.push_back(
+      body("plate", 0, cases::Rect{rz ? 0.0 : -0.5, 0.5, -0.2, 0.0}, {2.79, {}, 0.0}));
   s.bodies.push_back(
       body("block", 1, cases::Rect{rz ? 0.0 : -0.3, 0.3, gap, gap + 0.2}, {2.79, {0.0, -v}, 0.0}));
   Options o;

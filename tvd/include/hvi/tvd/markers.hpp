@@ -53,6 +53,10 @@ struct FaceApertures {
   }
 };
 
+//! MarkerSet::advect's `own` at or above this: the object fills the cell (a fraction of 1 to the
+//! round-off of the phases' fit, Phases::measure).
+inline constexpr double kOwnFilled = 1.0 - 1e-9;
+
 //! All marker lines of a run. Not safe for concurrent calls on one instance (rasterize,
 //! faceApertures and advect share scratch buffers); each call is threaded internally with OpenMP.
 class MarkerSet {

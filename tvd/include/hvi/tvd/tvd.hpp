@@ -57,15 +57,16 @@ struct Options {
   //! pulled the phases off the walls, docs/strength.md "TVD fracture"). false: the earlier
   //! motion with the field clamped to the outermost cell centres.
   bool markerWalls = true;
-  //! Cut-cell mode: where a body fills a cell of a marker's interpolation stencil, its line
-  //! moves with the velocity of the stencil's cells that hold the body only (docs/tvd.md
+  //! Cut-cell mode: where a body fills a cell of a marker's interpolation stencil or of the ring
+  //! around it, its line moves with the velocity of the stencil's cells that hold the body (or
+  //! that the bodies together fill) only (docs/tvd.md
   //! "Marker velocity: each line its own body's"; MarkerSet::advect's `own`). false, and always
   //! with tvd.outflow = "open": every cell's, vacuum cells taking their neighbours' mean, so that
   //! a body's free surface moved with a body a cell away (before 2026-12-04).
   bool ownBodyVelocity = true;
   //! Cut-cell mode with closedOutflow: a phase in an edge cell of an outflow side that moves
-  //! out and holds less of the cell than leaves in one step at its speed is released through
-  //! the side, booked as outflow (docs/tvd.md "Slivers at outflow sides"). false: it stays (the
+  //! out, holds less of the cell than leaves in one step at its speed and no longer reaches the
+  //! cell's inner face is released through the side, booked as outflow (docs/tvd.md "Slivers at outflow sides"). false: it stays (the
   //! side holds it as a wall while its lines, beyond the side, give it a vanishing fraction).
   bool releaseSlivers = true;
 };
