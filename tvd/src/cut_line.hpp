@@ -59,6 +59,10 @@ struct CutLineWork {
   std::vector<PhaseLine> phase;
   std::vector<double> area, invVol, invR;
   std::vector<double> relax;  // one cell's phases for the velocity relaxation (7 per phase)
+  //! The cells (2..n+1, in order) that two or more phases hold in this step (prepare): the only
+  //! ones where phases exchange momentum inside a cell or relax together.
+  std::vector<int> shared;
+  int sharedCount = 0;
   //! Mass of phase p through the line's low (2 p) and high (2 p + 1) end face, inflow positive,
   //! in line units (the kernel's ledgerFaces; the sweep books what crosses an outflow side).
   std::vector<double> edgeMass;

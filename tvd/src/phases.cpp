@@ -39,6 +39,7 @@ CutLineWork::CutLineWork(int cap, int phases) : capacity(cap) {
   invR.assign(nb, 0.0);
   relax.assign(7 * static_cast<std::size_t>(phases), 0.0);
   edgeMass.assign(2 * static_cast<std::size_t>(phases), 0.0);
+  shared.assign(nb, 0);
 }
 
 }  // namespace detail
@@ -182,12 +183,20 @@ void Phases::mixture(Conserved& U, bool energy) const {
   for (int k = 0; k < components; ++k) {
     // Component by component, phase by phase: contiguous streams (the phases are few).
     double* o = out[k];
-    for (int p = 0; p < count; ++p) {
+    auto component = [&](int p) {
       const Conserved& s = q[static_cast<std::size_t>(p)];
-      const double* in = k == 0   ? s.rho.data()
-                         : k == 1 ? s.mx.data()
-                         : k == 2 ? s.mz.data()
-                                  : s.E.data();
+      return k == 0 ? s.rho.data() : k == 1 ? s.mx.data() : k == 2 ? s.mz.data() : s.E.data();
+    };
+    // The first two phases in one pass (in0 + in1 is what o = in0, o += in1 gives, bit for bit):
+    // two streams read and one written instead of five.
+    if (count >= 2) {
+      const double* in0 = component(0);
+      const double* in1 = component(1);
+#pragma omp for schedule(static) nowait
+      for (long c = c0; c < c1; ++c) o[c] = in0[c] + in1[c];
+    }
+    for (int p = count >= 2 ? 2 : 0; p < count; ++p) {
+      const double* in = component(p);
       if (p == 0) {
 #pragma omp for schedule(static) nowait
         for (long c = c0; c < c1; ++c) o[c] = in[c];
