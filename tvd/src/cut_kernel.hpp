@@ -97,6 +97,13 @@ class CutLineSolver {
         ph.uR[f] = r ? std::max(ph.gp[f] - ph.ap[f], 0.0) : 0.0;
       }
     }
+    W_.sharedCount = 0;
+    if (P_ < 2) return;
+    for (int j = 2; j <= n_ + 1; ++j) {
+      int held = 0;
+      for (const auto& ph : W_.phase) held += ph.active && ph.present[j] ? 1 : 0;
+      if (held >= 2) W_.shared[static_cast<std::size_t>(W_.sharedCount++)] = j;
+    }
   }
 
   // An interface lying on a face (docs/tvd.md, "Interfaces on cell faces"): the phase wets
@@ -366,7 +373,8 @@ class CutLineSolver {
       }
     }
     if (P_ < 2) return;
-    for (int j = 2; j <= n_ + 1; ++j) {
+    for (int ix = 0; ix < W_.sharedCount; ++ix) {
+      const int j = W_.shared[static_cast<std::size_t>(ix)];
       // The pair's shared area, component by component: where a's outward area and b's inward
       // area agree in sign, the smaller of the two. Exact where the two fill the cell (I_b =
       // -I_a); with vacuum in the cell it never gives a phase more interface than it has, so a
@@ -420,7 +428,8 @@ class CutLineSolver {
     double* E = mt + P_;
     double* old = E + P_;  // 3 per phase: the judged momenta and energy before
     const double weight = first ? 1.0 : 2.0;  // the corrector's result changes twice its average
-    for (int j = 2; j <= n_ + 1; ++j) {
+    for (int ix = 0; ix < W_.sharedCount; ++ix) {
+      const int j = W_.shared[static_cast<std::size_t>(ix)];
       int held = 0;
       bool stiff = false;
       for (int p = 0; p < P_; ++p) {
@@ -615,6 +624,11 @@ class CutLineSolver {
         fail.what = "phase density not positive or state not finite after the positivity fallback";
         return false;
       }
+      // Below the vacuum density resetThin puts the cell at rest and cold right after this
+      // check (the same judged state, first stage, or its average, second): a floor here would
+      // only be taken back there. With round-off mass beside momentum the two bookings were
+      // each of the order of the whole problem's energy, hiding the net the reset removes.
+      if (!(r >= C_.rhoCut[p] * judgedVolume(ph, j, first))) continue;
       const double kin = 0.5 * (m * m + t * t) / r;
       if (E < kin && C_.keepColdStates && admissible(p, r, m, t, E, judgedVolume(ph, j, first)))
         continue;
