@@ -870,14 +870,42 @@ class CutLineSolver {
     }
   }
 
-  // Below the vacuum density a phase cell keeps its mass at rest and cold (booked), as in the
-  // whole-cell kernel.
+  // A phase cell below the vacuum density (docs/tvd.md, "The vacuum cut-off: pooled, not
+  // discarded") mixes with the neighbour along the line that holds the most of the phase, as
+  // Hu et al. (2006) mix small cells: the integrals pooled and shared by phase volume, so that
+  // both end at the pooled density, above the cut-off; exactly conservative. Only where no
+  // neighbour can lift it (none holds the phase, or the pooled density is below the cut-off
+  // too) is it put at rest and cold, booked, as the whole-cell kernel treats every such cell.
   void resetThin(int p, std::array<std::vector<double>, 4>& q, const std::vector<double>& S,
                  double weight) {
     PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
+    const double cut = C_.rhoCut[p];
     for (int j = 2; j <= n_ + 1; ++j) {
-      if (ph.present[j] && !(q[kRho][j] >= C_.rhoCut[p] * S[j]))
-        putAtRest(q, j, weight / W_.invVol[j], C_.axis, B_.floors);
+      if (!ph.present[j] || q[kRho][j] >= cut * S[j]) continue;
+      const double vj = 1.0 / W_.invVol[j], sj = S[j] * vj;
+      int t = -1;
+      double best = 0.0;
+      for (int n : {j - 1, j + 1}) {
+        if (n < 2 || n > n_ + 1 || !ph.present[n] || !(S[n] > 0.0)) continue;
+        const double mass = q[kRho][n] / W_.invVol[n];
+        if (mass > best) {
+          best = mass;
+          t = n;
+        }
+      }
+      if (t >= 0 && sj > 0.0) {
+        const double vt = 1.0 / W_.invVol[t], st = S[t] * vt;
+        if (q[kRho][j] * vj + best >= cut * (sj + st)) {
+          for (int k = 0; k < 4; ++k) {
+            const double u = (q[k][j] * vj + q[k][t] * vt) / (sj + st);
+            q[k][j] = u * S[j];
+            q[k][t] = u * S[t];
+          }
+          ++B_.pooled;
+          continue;
+        }
+      }
+      putAtRest(q, j, weight / W_.invVol[j], C_.axis, B_.floors);
     }
   }
 

@@ -38,6 +38,7 @@ struct LineBudget {
   std::array<Budget, 2> edge;  //!< through the low / high domain edge (inflow positive)
   long relaxed = 0;            //!< cut-cell mode: cell-stages whose phases took one velocity
   long mixed = 0;              //!< cut-cell mode: deficits mixed with a neighbour (mixDeficits)
+  long pooled = 0;             //!< cut-cell mode: cells below the vacuum density pooled (resetThin)
 };
 
 //! Buffers for one line of up to `capacity` cells plus two ghost cells at each end. Sized once,

@@ -370,6 +370,7 @@ void TvdSolver::finishSweep(int lines) {
     ledger_.outflow += rec.outflow;
     relaxations_ += rec.relaxed;
     mixings_ += rec.mixed;
+    poolings_ += rec.pooled;
     for (int e = 0; e < 2; ++e)
       if (rec.edgeMaterial[e] >= 0)
         ownership_.addBoundaryMass(rec.edgeMaterial[e], rec.edgeMass[e]);

@@ -263,6 +263,7 @@ void TvdSolver::sweepCut(int direction, double dt) {
       rec.floors = lb.floors.scaled(lineScale);
       rec.relaxed = lb.relaxed;
       rec.mixed = lb.mixed;
+      rec.pooled = lb.pooled;
       rec.bookEdges(lb, setup, lowSide, highSide, lineScale);
       // Each phase's mass through the outflow sides (what left positive), as bookEdges books
       // the sum (a wall's faces carry no mass).

@@ -37,7 +37,7 @@ struct TvdSolver::LineRecord {
   Budget boundary, interfaces, floors, outflow;
   std::array<double, 2> edgeMass{};  // mass in through the low and high domain edge
   std::array<int, 2> edgeMaterial{-1, -1};
-  long relaxed = 0, mixed = 0;  // cut-cell mode diagnostics (LineBudget)
+  long relaxed = 0, mixed = 0, pooled = 0;  // cut-cell mode diagnostics (LineBudget)
 
   //! What a line that reaches the domain's edges moved through them (line budget `lb`, scaled
   //! to the solver's units): through an outflow side it is what left, as totals() adds it back;

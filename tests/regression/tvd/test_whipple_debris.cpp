@@ -94,10 +94,11 @@ TEST(TvdWhippleDebris, ThinFilmRunsToTheEndTime) {
   std::printf(
       "whipple coarse d=0.4 to %.4f us: %ld steps, smallest step %.4g us, mass change per phase "
       "%.2g / %.2g / %.2g, energy change %.3g (floors %.3g), relaxed cell-stages %ld, deficits "
-      "mixed %ld\n",
+      "mixed %ld, thin cells pooled %ld\n",
       solver.time(), static_cast<long>(solver.step()), dtMin, m1[0] / m0[0] - 1,
       m1[1] / m0[1] - 1, m1[2] / m0[2] - 1, t1.energy() / t0.energy() - 1,
-      solver.ledger().floors.energy / t0.energy(), solver.relaxations(), solver.deficitMixings());
+      solver.ledger().floors.energy / t0.energy(), solver.relaxations(), solver.deficitMixings(),
+      solver.thinPoolings());
 }
 
 }  // namespace

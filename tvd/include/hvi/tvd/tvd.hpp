@@ -143,6 +143,9 @@ class TvdSolver final : public Solver {
   //! Cut-cell mode: deficits the limiter could not reach, mixed with a neighbour (docs/tvd.md
   //! "The thin film"), counted since this solver was built (a diagnostic; not checkpointed).
   [[nodiscard]] long deficitMixings() const { return mixings_; }
+  //! Cut-cell mode: cell-stages of a phase below the vacuum density pooled with a neighbour
+  //! instead of put at rest (docs/tvd.md, "The vacuum cut-off"); a diagnostic, not checkpointed.
+  [[nodiscard]] long thinPoolings() const { return poolings_; }
   //! Cut-cell mode: mass of each phase (body, Phases) that left through the outflow sides since
   //! the start (inflow negative; checkpointed): with it every body's mass closes to round-off.
   [[nodiscard]] const std::vector<double>& phaseOutflowMass() const { return phaseOutflow_; }
@@ -236,6 +239,7 @@ class TvdSolver final : public Solver {
   OldFractions alphaOld_;  // cut-cell mode: fractions before the marker step (nonzero ones)
   long relaxations_ = 0;   // cut-cell mode: relaxed cell-stages (diagnostic)
   long mixings_ = 0;       // cut-cell mode: deficits mixed (diagnostic)
+  long poolings_ = 0;      // cut-cell mode: thin cells pooled (diagnostic)
   long orphans_ = 0;       // cut-cell mode: cells kept off the geometry
   std::vector<double> phaseOutflow_;  // cut-cell mode: each phase's mass out through outflow sides
   std::vector<double> phaseEdge_;     // cut-cell mode: the same per line and sweep (line order)
