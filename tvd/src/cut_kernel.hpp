@@ -905,8 +905,50 @@ class CutLineSolver {
           continue;
         }
       }
+      if (sj > 0.0 && poolWider(p, q, S, j)) {
+        ++B_.pooled;
+        continue;
+      }
       putAtRest(q, j, weight / W_.invVol[j], C_.axis, B_.floors);
     }
+  }
+
+  // The pair cannot reach the cut-off (vapour beside vapour): the run of the phase's cells
+  // around j along the line (present, of positive part, contiguous) is pooled one more cell on
+  // each side at a time, up to kMixReach, until its density reaches the cut-off, and shared by
+  // phase volume, as mixWider pools a deficit. False (nothing changed) if it never does: then
+  // the phase is below the vacuum density over the whole reach.
+  bool poolWider(int p, std::array<std::vector<double>, 4>& q, const std::vector<double>& S,
+                 int j) {
+    PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
+    auto in = [&](int c) { return c >= 2 && c <= n_ + 1 && ph.present[c] && S[c] > 0.0; };
+    int lo = j, hi = j;
+    double mass = q[kRho][j] / W_.invVol[j], vol = S[j] / W_.invVol[j];
+    for (int reach = 1; reach <= kMixReach; ++reach) {
+      bool grew = false;
+      if (lo == j - reach + 1 && in(j - reach)) {
+        --lo;
+        mass += q[kRho][lo] / W_.invVol[lo];
+        vol += S[lo] / W_.invVol[lo];
+        grew = true;
+      }
+      if (hi == j + reach - 1 && in(j + reach)) {
+        ++hi;
+        mass += q[kRho][hi] / W_.invVol[hi];
+        vol += S[hi] / W_.invVol[hi];
+        grew = true;
+      }
+      if (!grew) return false;
+      if (!(mass >= C_.rhoCut[p] * vol)) continue;
+      for (int k = 0; k < 4; ++k) {
+        double total = 0.0;
+        for (int c = lo; c <= hi; ++c) total += q[k][c] / W_.invVol[c];
+        const double u = total / vol;
+        for (int c = lo; c <= hi; ++c) q[k][c] = u * S[c];
+      }
+      return true;
+    }
+    return false;
   }
 
   CutLineWork& W_;
