@@ -628,10 +628,10 @@ class CutLineSolver {
       // check (the same judged state, first stage, or its average, second): a floor here would
       // only be taken back there. With round-off mass beside momentum the two bookings were
       // each of the order of the whole problem's energy, hiding the net the reset removes.
-      if (!(r >= C_.rhoCut[p] * judgedVolume(ph, j, first))) continue;
+      const double vol = judgedVolume(ph, j, first);
+      if (!(r >= C_.rhoCut[p] * vol)) continue;
       const double kin = 0.5 * (m * m + t * t) / r;
-      if (E < kin && C_.keepColdStates && admissible(p, r, m, t, E, judgedVolume(ph, j, first)))
-        continue;
+      if (E < kin && C_.keepColdStates && admissible(p, r, m, t, E, vol)) continue;
       if (E < kin) {  // raise the judged energy to the kinetic energy (e = 0), booked
         const double add = (kin - E) * (first ? 1.0 : 2.0);
         B_.floors.energy += 0.5 * add / W_.invVol[j];  // the final state changes by add / 2
@@ -873,44 +873,48 @@ class CutLineSolver {
   // A phase cell below the vacuum density (docs/tvd.md, "The vacuum cut-off: pooled, not
   // discarded") mixes with the neighbour along the line that holds the most of the phase, as
   // Hu et al. (2006) mix small cells: the integrals pooled and shared by phase volume, so that
-  // both end at the pooled density, above the cut-off; exactly conservative. Only where no
-  // neighbour can lift it (none holds the phase, or the pooled density is below the cut-off
-  // too) is it put at rest and cold, booked, as the whole-cell kernel treats every such cell.
+  // both end at the pooled density, above the cut-off; exactly conservative. Where the pair
+  // stays below the cut-off, a wider run of the phase's cells is pooled (poolWider). Only where
+  // nothing lifts it (no neighbour holds the phase, or the phase is below the cut-off over the
+  // whole reach) is it put at rest and cold, booked, as the whole-cell kernel treats every such
+  // cell.
   void resetThin(int p, std::array<std::vector<double>, 4>& q, const std::vector<double>& S,
                  double weight) {
     PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
-    const double cut = C_.rhoCut[p];
     for (int j = 2; j <= n_ + 1; ++j) {
-      if (!ph.present[j] || q[kRho][j] >= cut * S[j]) continue;
-      const double vj = 1.0 / W_.invVol[j], sj = S[j] * vj;
-      int t = -1;
-      double best = 0.0;
-      for (int n : {j - 1, j + 1}) {
-        if (n < 2 || n > n_ + 1 || !ph.present[n] || !(S[n] > 0.0)) continue;
-        const double mass = q[kRho][n] / W_.invVol[n];
-        if (mass > best) {
-          best = mass;
-          t = n;
-        }
-      }
-      if (t >= 0 && sj > 0.0) {
-        const double vt = 1.0 / W_.invVol[t], st = S[t] * vt;
-        if (q[kRho][j] * vj + best >= cut * (sj + st)) {
-          for (int k = 0; k < 4; ++k) {
-            const double u = (q[k][j] * vj + q[k][t] * vt) / (sj + st);
-            q[k][j] = u * S[j];
-            q[k][t] = u * S[t];
-          }
-          ++B_.pooled;
-          continue;
-        }
-      }
-      if (sj > 0.0 && poolWider(p, q, S, j)) {
+      if (!ph.present[j] || q[kRho][j] >= C_.rhoCut[p] * S[j]) continue;
+      if (S[j] > 0.0 && (poolPair(p, q, S, j) || poolWider(p, q, S, j))) {
         ++B_.pooled;
         continue;
       }
       putAtRest(q, j, weight / W_.invVol[j], C_.axis, B_.floors);
     }
+  }
+
+  // Cell j pooled with the line neighbour that holds the most of the phase, if the pair's
+  // density reaches the cut-off; false (nothing changed) otherwise.
+  bool poolPair(int p, std::array<std::vector<double>, 4>& q, const std::vector<double>& S, int j) {
+    PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
+    int t = -1;
+    double best = 0.0;
+    for (int n : {j - 1, j + 1}) {
+      if (n < 2 || n > n_ + 1 || !ph.present[n] || !(S[n] > 0.0)) continue;
+      const double mass = q[kRho][n] / W_.invVol[n];
+      if (mass > best) {
+        best = mass;
+        t = n;
+      }
+    }
+    if (t < 0) return false;
+    const double vj = 1.0 / W_.invVol[j], vt = 1.0 / W_.invVol[t];
+    const double sj = S[j] * vj, st = S[t] * vt;
+    if (!(q[kRho][j] * vj + best >= C_.rhoCut[p] * (sj + st))) return false;
+    for (int k = 0; k < 4; ++k) {
+      const double u = (q[k][j] * vj + q[k][t] * vt) / (sj + st);
+      q[k][j] = u * S[j];
+      q[k][t] = u * S[t];
+    }
+    return true;
   }
 
   // The pair cannot reach the cut-off (vapour beside vapour): the run of the phase's cells

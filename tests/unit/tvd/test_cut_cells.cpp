@@ -378,24 +378,33 @@ TEST(TvdCutCells, ThinPhaseFasterThanTheStepIsLimitedAndBooked) {
   EXPECT_NEAR(solver.totals().energy() - booked, e0, 1e-12 * e0);
 }
 
-// A phase cell below the vacuum density whose mass went negative by round-off while it still
-// moves: the state that stopped a Whipple run at 10 km/s (d = 1.2 cm, 0.0423 cm cells, step
-// 4589: the projectile's phase at fraction 0.0054 with -1.1e-9 g/cm^3, momentum (2.8e-9,
-// 6.2e-8), energy 1.9e-7). It is vacuum: it sets no time step and the next sweep puts it at rest
-// (resetThin, booked under floors). The start-of-step check accepted such a cell only once at
-// rest and stopped the run otherwise. Checked: the step goes on, every phase's mass (the
-// negative sliver included) is kept to 1e-13, and the energy closes against the ledger to the
-// sliver's own energy (a disk at rest: nothing else moves).
-TEST(TvdCutCells, MovingSliverBelowTheVacuumDensityIsVacuum) {
-  const double h = 0.05;
+// A cold aluminium disk at rest (radius 0.4 cm) on a planar grid of cells h, and the first of
+// its cells that it fills only as a sliver (fraction 0.005-0.1; the cell count if none).
+cases::Scene coldDisk(double h) {
   cases::Scene s = cutScene(-1.0, 1.0, -1.0, 1.0, h);
   s.materials.push_back(material("aluminium", eos::aluminiumStudy()));
   s.bodies.push_back(body("disk", 0, cases::Disk{{0.0, 0.0}, 0.4}, {2.79, {0.0, 0.0}, 0.0}));
-  TvdSolver solver(s);
+  return s;
+}
+std::size_t firstSliver(const Phases& ph) {
+  for (std::size_t c = 0; c < ph.alpha[0].size(); ++c)
+    if (ph.alpha[0][c] > 0.005 && ph.alpha[0][c] < 0.1) return c;
+  return ph.alpha[0].size();
+}
+
+// A phase cell below the vacuum density whose mass went negative by round-off while it still
+// moves: the state that stopped a Whipple run at 10 km/s (d = 1.2 cm, 0.0423 cm cells, step
+// 4589: the projectile's phase at fraction 0.0054 with -1.1e-9 g/cm^3, momentum (2.8e-9,
+// 6.2e-8), energy 1.9e-7). It is vacuum: it sets no time step and the next sweep pools it with
+// its neighbours or puts it at rest (resetThin, booked under floors). The start-of-step check
+// accepted such a cell only once at rest and stopped the run otherwise. Checked: the step goes on,
+// every phase's mass (the negative sliver included) is kept to 1e-13, and the energy closes against
+// the ledger to the sliver's own energy (a disk at rest: nothing else moves).
+TEST(TvdCutCells, MovingSliverBelowTheVacuumDensityIsVacuum) {
+  const double h = 0.05;
+  TvdSolver solver(coldDisk(h));
   Phases& ph = solver.phasesForTesting();
-  std::size_t sliver = ph.alpha[0].size();
-  for (std::size_t c = 0; c < ph.alpha[0].size() && sliver == ph.alpha[0].size(); ++c)
-    if (ph.alpha[0][c] > 0.005 && ph.alpha[0][c] < 0.1) sliver = c;
+  const std::size_t sliver = firstSliver(ph);
   ASSERT_LT(sliver, ph.alpha[0].size());
   const double a = ph.alpha[0][sliver];
   ph.q[0].rho[sliver] = -1e-9 * a;
@@ -425,18 +434,14 @@ TEST(TvdCutCells, MovingSliverBelowTheVacuumDensityIsVacuum) {
 // disk at rest (its neighbours at P = 0 push nothing into it, so it is still below the cut-off
 // after the stage): the vapour holds all the x-momentum there is. Put at rest, as before, the
 // vapour's momentum is booked under floors (-rho u a h^2, the whole total); pooled, nothing
-// books momentum (only the energy floors act, which book none) and the total keeps it. (The energy cannot tell the two apart here: the disturbed cold disk's energy floors,
-// "The energy floor in cold compressed cells", are a few times the vapour's energy either way.)
+// books momentum (only the energy floors act, which book none) and the total keeps it. (The
+// energy cannot tell the two apart here: the disturbed cold disk's energy floors, "The energy
+// floor in cold compressed cells", are a few times the vapour's energy either way.)
 TEST(TvdCutCells, ThinCellIsPooledWithItsNeighbourNotDiscarded) {
   const double h = 0.05;
-  cases::Scene s = cutScene(-1.0, 1.0, -1.0, 1.0, h);
-  s.materials.push_back(material("aluminium", eos::aluminiumStudy()));
-  s.bodies.push_back(body("disk", 0, cases::Disk{{0.0, 0.0}, 0.4}, {2.79, {0.0, 0.0}, 0.0}));
-  TvdSolver solver(s);
+  TvdSolver solver(coldDisk(h));
   Phases& ph = solver.phasesForTesting();
-  std::size_t sliver = ph.alpha[0].size();
-  for (std::size_t c = 0; c < ph.alpha[0].size() && sliver == ph.alpha[0].size(); ++c)
-    if (ph.alpha[0][c] > 0.005 && ph.alpha[0][c] < 0.1) sliver = c;
+  const std::size_t sliver = firstSliver(ph);
   ASSERT_LT(sliver, ph.alpha[0].size());
   const double a = ph.alpha[0][sliver], rho = 0.5e-6 * 2.79, u = 0.3, e = 50.0;
   ph.q[0].rho[sliver] = rho * a;
@@ -460,9 +465,10 @@ TEST(TvdCutCells, ThinCellIsPooledWithItsNeighbourNotDiscarded) {
   EXPECT_NEAR(solver.totals().momentumX, p0, 1e-9 * p0);
   const double floors = solver.ledger().floors.energy;
   EXPECT_NEAR(solver.totals().energy() - floors, e0, 1e-12 * (e0 + std::abs(floors)));
-  std::printf("  vapour at fraction %.3g: %ld steps, %ld poolings, momentum change %.2e, floors %.2e "
-              "of the energy\n", a, solver.step(), solver.thinPoolings(),
-              solver.totals().momentumX / p0 - 1.0, floors / e0);
+  std::printf(
+      "  vapour at fraction %.3g: %ld steps, %ld poolings, momentum change %.2e, floors %.2e "
+      "of the energy\n",
+      a, solver.step(), solver.thinPoolings(), solver.totals().momentumX / p0 - 1.0, floors / e0);
 }
 
 // An orphan (material in a cell its lines no longer cover, no cell of its phase within two
