@@ -38,24 +38,16 @@ struct VelocityField {
     const long r0 = static_cast<long>(k0) * g.nx, r1 = static_cast<long>(k1) * g.nx;
     long c00 = r0 + i0, c10 = r0 + i1, c01 = r1 + i0, c11 = r1 + i1;
     if (own != nullptr) {
-      // Where the body fills a cell of the stencil or next to it, only the cells that hold it:
-      // a cell of another body's free surface or of vacuum takes the value of its row partner,
-      // else its column partner, else the diagonal one that does (a constant field stays
-      // exact). Where the body fills no cell near (a sliver, spray), every cell, as before.
+      // Only the cells of the stencil the body may read (its own live cells, and cells that
+      // live bodies fill together: a contact): an unmarked cell (vacuum, another body's free
+      // surface or spray, the body's own cells below the time-step density) takes the value of
+      // its row partner, else its column partner, else the diagonal one, so a constant field
+      // stays exact. This holds for spray too, a body that fills no cell near the marker: a
+      // vacuum cell there carries the mean of its neighbours, other bodies' included. A stencil
+      // with no marked cell reads every cell, as before the rule.
       const bool m00 = own[c00] > 0.0, m10 = own[c10] > 0.0, m01 = own[c01] > 0.0,
                  m11 = own[c11] > 0.0;
-      // Filled: the body fills a cell of the stencil or of the ring around it (a marker on a
-      // body's surface whose stencil holds only the cut cell and vacuum is still next to it).
-      // Looked for only where a cell of the stencil is not the body's.
-      bool filled = false;
-      if (!(m00 && m10 && m01 && m11))
-        for (int kk = std::max(k - 1, 0); kk <= std::min(k + 2, g.nz - 1) && !filled; ++kk)
-          for (int ii = std::max(i - 1, 0); ii <= std::min(i + 2, g.nx - 1); ++ii)
-            if (own[static_cast<long>(kk) * g.nx + ii] >= kOwnFilled) {
-              filled = true;
-              break;
-            }
-      if (filled) {
+      if ((m00 || m10 || m01 || m11) && !(m00 && m10 && m01 && m11)) {
         const long a00 = c00, a10 = c10, a01 = c01, a11 = c11;
         if (!m00) c00 = m10 ? a10 : m01 ? a01 : a11;
         if (!m10) c10 = m00 ? a00 : m11 ? a11 : a01;

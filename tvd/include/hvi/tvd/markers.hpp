@@ -53,8 +53,9 @@ struct FaceApertures {
   }
 };
 
-//! MarkerSet::advect's `own` at or above this: the object fills the cell (a fraction of 1 to the
-//! round-off of the phases' fit, Phases::measure).
+//! A cell's live phases cover it when their fractions sum to this or more (1 to the round-off
+//! of the phases' fit, Phases::measure): every body's line may then read its velocity
+//! (TvdSolver::markOwnCells, MarkerSet::advect's `own`).
 inline constexpr double kOwnFilled = 1.0 - 1e-9;
 
 //! All marker lines of a run. Not safe for concurrent calls on one instance (rasterize,
@@ -93,12 +94,11 @@ class MarkerSet {
   //! `open` (sides xmin, xmax, zmin, zmax): a marker beyond an open (outflow) side stays where
   //! it is: what it bounded has left and must not be brought back by the edge cells' velocity
   //! (the cut-cell mode, docs/tvd.md "Outflow sides: no re-entry"); none open by default.
-  //! `own` (optional, one array per object, cells of `grid`): where own[o][c] > 0 the cell
-  //! holds object o, and where it is 1 (to round-off) o fills it. Where o fills a cell of a
-  //! line's interpolation stencil or of the ring of cells around it, the line reads the
-  //! velocity only of the stencil's cells that hold o (the others take the value of a neighbour
-  //! in the stencil that does; docs/tvd.md "Marker velocity: each line its own body's");
-  //! elsewhere, or with no `own`, every cell.
+  //! `own` (optional, one array per object, cells of `grid`): where own[o][c] > 0 a line of
+  //! object o may read cell c's velocity (o holds it, or bodies fill it together). Where some
+  //! but not all cells of a line's interpolation stencil are marked, the line reads only the
+  //! marked ones (the others take the value of a neighbour in the stencil that is; docs/tvd.md
+  //! "Marker velocity: each line its own body's"); where none is, or with no `own`, every cell.
   void advect(const GridSpec& grid, const double* vx, const double* vz, double dt,
               std::array<bool, 4> walls = {}, std::array<bool, 4> open = {},
               bool oddWalls = false, const std::vector<std::vector<double>>* own = nullptr);

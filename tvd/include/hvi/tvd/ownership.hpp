@@ -62,7 +62,7 @@ class Ownership {
   [[nodiscard]] bool cutsLines() const { return cut_[0] || cut_[1] || cut_[2] || cut_[3]; }
   //! Cut cells: markers on a wall stay on it, none crosses one (Options::markerWalls).
   void setMarkerWalls(bool on) { markerWalls_ = on; }
-  //! Cut-cell mode: each line reads its own body's cells' velocity where the body fills one
+  //! Cut-cell mode: each line reads its own body's cells' velocity where its stencil holds one
   //! (MarkerSet::advect's `own`; Options::ownBodyVelocity).
   void setOwnVelocity(bool on) { ownVelocity_ = on; }
   //! The marker step of the cut-cell mode: moves and redistributes the lines, rebuilds the
