@@ -120,8 +120,9 @@ void TvdSolver::setUpGrid(const cases::Scene& scene) {
     throw InputError(fmt::format(
         "tvd.cfl = {}: must be in (0, 0.5] (the positivity fallback flux needs CFL <= 1/2)",
         p.cfl));
-  if (!(p.vacuumDensity > 0.0) || p.vacuumDensity >= 1.0)
-    throw InputError(fmt::format("tvd.vacuum_density = {}: must be a fraction of rho0 in (0, 1)",
+  if (!(p.vacuumDensity >= 0.0) || p.vacuumDensity >= 1.0)
+    throw InputError(fmt::format("tvd.vacuum_density = {}: must be a fraction of rho0 in [0, 1) "
+                                 "(0: the interface mode's default)",
                                  p.vacuumDensity));
   if (!(options_.entropyFix >= 0.0) || options_.contactIterations < 0)
     throw InputError("tvd options: entropyFix must be >= 0 and contactIterations >= 0");
@@ -186,7 +187,7 @@ void TvdSolver::setUpMaterials(const cases::Scene& scene) {
     }
   }
   for (const auto& m : materials_) {
-    rhoCut_.push_back(params_.vacuumDensity * m.rho0());
+    rhoCut_.push_back(vacuumDensity() * m.rho0());
     rhoThin_.push_back(std::max(kThinFraction * m.rho0(), rhoCut_.back()));
     rhoStep_.push_back(kStepDensityFraction * m.rho0());
   }

@@ -171,7 +171,10 @@ struct TvdParams {
   Limiter limiter = Limiter::Minmod;
   double cfl = 0.4;
   double markerSpacing = 0.5;  //!< target marker spacing in cells
-  double vacuumDensity = 1e-6; //!< below this fraction of rho0 a cell is vacuum
+  //! Below this fraction of rho0 a cell (a phase of a cut cell) is vacuum: put at rest and cold,
+  //! its mass kept. 0: the mode's default (TvdSolver::vacuumDensity(): 1e-6 without
+  //! markers and in the whole-cell mode, 1e-9 in the conservative mode; docs/tvd.md).
+  double vacuumDensity = 0.0;
 };
 
 //! Exact Riemann problem (the verification "solver"): the left and right bodies meet at
