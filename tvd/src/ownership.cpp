@@ -123,12 +123,24 @@ void Ownership::extendIntoVacuum(int layers, int rowLo, int rowHi) {
   const signed char* known = known_.data();
   double* vx = midX();
   double* vz = midZ();
+  // Most cells of the rows are vacuum far from any known cell: a byte mask per row (a known
+  // cell in the column within a row) skips them before the neighbour sums, which are taken as
+  // before, in the same order (same values).
+  nearKnown_.resize(static_cast<std::size_t>(nx));
+  unsigned char* col = nearKnown_.data();
   for (int layer = 0; layer < layers; ++layer) {
     fresh_.clear();
-    for (int k = rowLo; k < rowHi; ++k)
+    for (int k = rowLo; k < rowHi; ++k) {
+      const int k0 = std::max(k - 1, 0), k1 = std::min(k + 1, nz - 1);
+      for (int i = 0; i < nx; ++i) col[i] = 0;
+      for (int kk = k0; kk <= k1; ++kk) {
+        const signed char* row = known + static_cast<long>(kk) * nx;
+        for (int i = 0; i < nx; ++i) col[i] |= static_cast<unsigned char>(row[i] == 1);
+      }
       for (int i = 0; i < nx; ++i) {
         const long c = static_cast<long>(k) * nx + i;
         if (known[c]) continue;
+        if (!(col[i] | (i > 0 ? col[i - 1] : 0) | (i + 1 < nx ? col[i + 1] : 0))) continue;
         double sx = 0.0, sz = 0.0;
         int count = 0;
         for (int dk = -1; dk <= 1; ++dk)
@@ -146,6 +158,7 @@ void Ownership::extendIntoVacuum(int layers, int rowLo, int rowHi) {
         vz[c] = sz / count;
         fresh_.push_back(c);
       }
+    }
     for (long c : fresh_) known_[static_cast<std::size_t>(c)] = 1;  // usable in the next ring
   }
 }

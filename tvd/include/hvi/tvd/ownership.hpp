@@ -147,6 +147,7 @@ class Ownership {
   std::vector<Change> changes_;
   std::vector<signed char> known_;    // cell has a velocity for the markers
   std::vector<long> fresh_;           // cells given a velocity in this ring
+  std::vector<unsigned char> nearKnown_;  // per column of a row: a known cell within a row
   std::vector<double> normalLength_;  // marker length per cell
   bool cutCells_ = false;
   std::array<bool, 4> open_{};  // cut-cell mode: the outflow sides (MarkerSet::advect)
