@@ -55,6 +55,9 @@ TvdSolver::TvdSolver(const cases::Scene& scene, Options options)
     phaseOutflow_.assign(materials_.size(), 0.0);
     phaseEdge_.assign(static_cast<std::size_t>(lineCells) * materials_.size(), 0.0);
     phaseSpan_.assign(2 * static_cast<std::size_t>(lineCells) * materials_.size(), -1);
+    spanNext_.assign(2 * static_cast<std::size_t>(threads_) * static_cast<std::size_t>(lineCells) *
+                         materials_.size(),
+                     -1);
   }
   time_ = scene.tStart;
   if (markersOn_) {

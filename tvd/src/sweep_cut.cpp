@@ -76,23 +76,48 @@ void TvdSolver::sweepCut(int direction, double dt) {
   const Side lowSide = detail::sideOf(domain_.boundary[xdir ? 0 : 2]);
   const Side highSide = detail::sideOf(domain_.boundary[xdir ? 1 : 3]);
 
-  // Each phase's first and last occupied position along every line, in one pass over the
-  // fractions in memory order (the rows [rowLo, rowHi) hold every occupied cell). The kernel
-  // changes fractions only on its own line, so these stay valid through the sweep.
+  // Each phase's first and last occupied position along every line. The kernel changes
+  // fractions only on its own line, so these stay valid through the sweep. The step's first
+  // sweep finds them in one pass over the fractions in memory order (the rows [rowLo, rowHi)
+  // hold every occupied cell) and, as it writes its lines back, records them for the lines of
+  // the other direction (per thread, merged after it); the second sweep takes that record
+  // instead of reading the whole fraction field again (a memory-bound pass, 8 % of the
+  // conservative variant-1 run, docs/tvd.md).
+  const bool firstSweep = volumeFresh_;
   int* span = phaseSpan_.data();  // [(line * P + p) * 2 + 0 / 1]
-  std::fill_n(span, 2L * lines * P, -1);
-  for (int p = 0; p < P; ++p) {
-    const double* al = phases_.alpha[static_cast<std::size_t>(p)].data();
-    for (int k = phases_.rowLo; k < phases_.rowHi; ++k) {
-      const double* row = al + static_cast<long>(k) * nx;
-      for (int i = 0; i < nx; ++i) {
-        if (!(row[i] >= kPhaseAbsent)) continue;
-        int* s = span + 2 * (static_cast<long>(xdir ? k : i) * P + p);
-        if (s[0] < 0) s[0] = xdir ? i : k;  // positions come in increasing order per line
-        s[1] = xdir ? i : k;
+  const long stride = 2L * static_cast<long>(lineRecords_.size()) * P;  // one thread's record
+  if (!firstSweep && spanNextValid_) {
+    for (long e = 0; e < 2L * lines * P; e += 2) {
+      int lo = std::numeric_limits<int>::max(), hi = -1;
+      for (int t = 0; t < threads_; ++t) {
+        lo = std::min(lo, spanNext_[static_cast<std::size_t>(t * stride + e)]);
+        hi = std::max(hi, spanNext_[static_cast<std::size_t>(t * stride + e + 1)]);
+      }
+      span[e] = hi < 0 ? -1 : lo;
+      span[e + 1] = hi;
+    }
+  } else {
+    std::fill_n(span, 2L * lines * P, -1);
+    for (int p = 0; p < P; ++p) {
+      const double* al = phases_.alpha[static_cast<std::size_t>(p)].data();
+      for (int k = phases_.rowLo; k < phases_.rowHi; ++k) {
+        const double* row = al + static_cast<long>(k) * nx;
+        for (int i = 0; i < nx; ++i) {
+          if (!(row[i] >= kPhaseAbsent)) continue;
+          int* s = span + 2 * (static_cast<long>(xdir ? k : i) * P + p);
+          if (s[0] < 0) s[0] = xdir ? i : k;  // positions come in increasing order per line
+          s[1] = xdir ? i : k;
+        }
       }
     }
   }
+  const int otherLines = xdir ? nx : grid_.nz;
+  if (firstSweep)
+    for (int t = 0; t < threads_; ++t)
+      for (long e = 0; e < 2L * otherLines * P; e += 2) {
+        spanNext_[static_cast<std::size_t>(t * stride + e)] = std::numeric_limits<int>::max();
+        spanNext_[static_cast<std::size_t>(t * stride + e + 1)] = -1;
+      }
 
 #pragma omp parallel num_threads(threads_) if (grid_.cells() >= kParallelCells)
   {
@@ -102,6 +127,11 @@ void TvdSolver::sweepCut(int direction, double dt) {
     Workspace& ws = *work_[0];
 #endif
     detail::CutLineWork& W = *ws.cut;
+#ifdef _OPENMP
+    int* record = spanNext_.data() + static_cast<long>(omp_get_thread_num()) * stride;
+#else
+    int* record = spanNext_.data();
+#endif
 #pragma omp for schedule(dynamic, 2)
     for (int line = 0; line < lines; ++line) {
       LineRecord& rec = lineRecords_[static_cast<std::size_t>(line)];
@@ -248,6 +278,12 @@ void TvdSolver::sweepCut(int direction, double dt) {
           // part as its fraction) until the marker step measures it.
           if (ph.virt[j] != 0 && alpha[c] < kPhaseAbsent && ph.q0[detail::kRho][j] != 0.0)
             alpha[c] = std::max(ph.vol0[j], kPhaseAbsent);
+          // The cell at position pos of this line is at position `line` of line pos across.
+          if (firstSweep && alpha[c] >= kPhaseAbsent) {
+            int* r = record + 2 * (static_cast<long>(a - 2 + j) * P + p);
+            r[0] = std::min(r[0], line);
+            r[1] = std::max(r[1], line);
+          }
         }
         // docs/strength.md, "TVD with interfaces": the phase's strength state moves with the
         // phase's own mass fluxes (every mass change of the kernel is between cells of the line).
@@ -278,6 +314,7 @@ void TvdSolver::sweepCut(int direction, double dt) {
     }
   }
   volumeFresh_ = false;
+  spanNextValid_ = firstSweep;
   finishSweep(lines);
   for (int line = 0; line < lines; ++line) {  // in line order, as the ledger
     const double* out = &phaseEdge_[static_cast<std::size_t>(line) * static_cast<std::size_t>(P)];

@@ -256,6 +256,10 @@ class TvdSolver final : public Solver {
   // (-1 where none), from one pass over the fractions in memory order: the line windows
   // without a strided search from both ends of every line.
   std::vector<int> phaseSpan_;
+  // Cut-cell mode: the same for the lines of the step's second sweep, recorded per thread by the
+  // first as it writes its lines back (valid while spanNextValid_).
+  std::vector<int> spanNext_;
+  bool spanNextValid_ = false;
   // Cut-cell mode: the working fractions equal alpha (the first sweep of a step reads alpha and
   // writes phases_.volume; every occupied cell lies in its line's window, so all are written).
   bool volumeFresh_ = true;
