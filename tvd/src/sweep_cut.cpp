@@ -81,7 +81,7 @@ void TvdSolver::sweepCut(int direction, double dt) {
   // sweep finds them in one pass over the fractions in memory order (the rows [rowLo, rowHi)
   // hold every occupied cell) and, as it writes its lines back, records them for the lines of
   // the other direction (per thread, merged after it); the second sweep takes that record
-  // instead of reading the whole fraction field again (a memory-bound pass, 8 % of the
+  // instead of reading the whole fraction field again (a memory-bound pass, 2 % of the
   // conservative variant-1 run, docs/tvd.md).
   const bool firstSweep = volumeFresh_;
   int* span = phaseSpan_.data();  // [(line * P + p) * 2 + 0 / 1]
@@ -122,16 +122,13 @@ void TvdSolver::sweepCut(int direction, double dt) {
 #pragma omp parallel num_threads(threads_) if (grid_.cells() >= kParallelCells)
   {
 #ifdef _OPENMP
-    Workspace& ws = *work_[static_cast<std::size_t>(omp_get_thread_num())];
+    const int thread = omp_get_thread_num();
 #else
-    Workspace& ws = *work_[0];
+    const int thread = 0;
 #endif
+    Workspace& ws = *work_[static_cast<std::size_t>(thread)];
     detail::CutLineWork& W = *ws.cut;
-#ifdef _OPENMP
-    int* record = spanNext_.data() + static_cast<long>(omp_get_thread_num()) * stride;
-#else
-    int* record = spanNext_.data();
-#endif
+    int* record = spanNext_.data() + thread * stride;  // this thread's spans for the next sweep
 #pragma omp for schedule(dynamic, 2)
     for (int line = 0; line < lines; ++line) {
       LineRecord& rec = lineRecords_[static_cast<std::size_t>(line)];
