@@ -33,13 +33,16 @@ struct Family {
 };
 
 //! Adds the wet run [lo, hi] (along the line, cells) to the line's faces, capped at 1 (the sum
-//! of disjoint runs in a face can exceed 1 by rounding only).
-void addRun(double lo, double hi, const Family& fam, double* line) {
+//! of disjoint runs in a face can exceed 1 by rounding only), and widens the line's wet span
+//! [first, end) of faces to hold the run.
+void addRun(double lo, double hi, const Family& fam, double* line, int& first, int& end) {
   lo = std::max(lo, 0.0);
   hi = std::min(hi, static_cast<double>(fam.faces));
   if (!(hi > lo)) return;
   const int f0 = static_cast<int>(std::floor(lo));
   const int f1 = static_cast<int>(std::ceil(hi)) - 1;
+  first = std::min(first, f0);
+  end = std::max(end, f1 + 1);
   for (int f = f0; f <= f1; ++f) {
     double& a = line[static_cast<long>(f) * fam.faceStride];
     a = std::min(1.0, a + (std::min(hi, f + 1.0) - std::max(lo, static_cast<double>(f))));
@@ -47,10 +50,6 @@ void addRun(double lo, double hi, const Family& fam, double* line) {
 }
 
 }  // namespace
-
-void MarkerSet::faceApertures(const GridSpec& grid, FaceApertures& out) const {
-  faceApertures(grid, out, 0, std::max(grid.nz, 0));
-}
 
 void MarkerSet::rowSpan(const GridSpec& g, int& lo, int& hi) const {
   double wl = 1e300, wh = -1e300;
@@ -69,23 +68,28 @@ void MarkerSet::rowSpan(const GridSpec& g, int& lo, int& hi) const {
   hi = rowOf(wh) + 1;
 }
 
-void MarkerSet::faceApertures(const GridSpec& grid, FaceApertures& out, int rowLo,
-                              int rowHi) const {
+void MarkerSet::faceApertures(const GridSpec& grid, FaceApertures& out) const {
   const int nx = std::max(grid.nx, 0), nz = std::max(grid.nz, 0);
-  const bool sized = out.nx == nx && out.nz == nz && out.objects == objects_;
+  const long xPerSide = static_cast<long>(nx + 1) * nz, zPerSide = static_cast<long>(nz + 1) * nx;
+  const auto xSize = static_cast<std::size_t>(2L * objects_ * xPerSide);
+  const auto zSize = static_cast<std::size_t>(2L * objects_ * zPerSide);
+  const auto xSpans = static_cast<std::size_t>(4L * objects_ * (nx + 1));
+  const auto zSpans = static_cast<std::size_t>(4L * objects_ * (nz + 1));
+  // The same layout as the previous call: its wet spans bound every nonzero face, so only they
+  // are cleared (line by line, just before the line is written); else everything is.
+  const bool sized = out.nx == nx && out.nz == nz && out.objects == objects_ &&
+                     out.x.size() == xSize && out.z.size() == zSize && out.xSpan.size() == xSpans &&
+                     out.zSpan.size() == zSpans;
   out.nx = nx;
   out.nz = nz;
   out.objects = objects_;
-  const long xPerSide = static_cast<long>(nx + 1) * nz, zPerSide = static_cast<long>(nz + 1) * nx;
-  out.x.resize(static_cast<std::size_t>(2L * objects_ * xPerSide));
-  out.z.resize(static_cast<std::size_t>(2L * objects_ * zPerSide));
-  if (nx == 0 || nz == 0) return;
-  if (!sized) {  // a fresh layout: every face is cleared below
-    rowLo = 0;
-    rowHi = nz;
+  if (!sized) {
+    out.x.assign(xSize, 0.0);
+    out.z.assign(zSize, 0.0);
+    out.xSpan.assign(xSpans, 0);
+    out.zSpan.assign(zSpans, 0);
   }
-  rowLo = std::clamp(rowLo, 0, nz);
-  rowHi = std::clamp(rowHi, rowLo, nz);
+  if (nx == 0 || nz == 0) return;
   const Family families[2] = {
       {true, nx + 1, nz, 1, nx + 1, xPerSide, +1},
       {false, nz + 1, nx, nx, 1, zPerSide, -1},
@@ -97,6 +101,7 @@ void MarkerSet::faceApertures(const GridSpec& grid, FaceApertures& out, int rowL
     for (int fi = 0; fi < 2; ++fi) {
       const Family& fam = families[fi];
       double* base = (fam.vertical ? out.x.data() : out.z.data()) + 2L * obj * fam.sideStride;
+      int* span = (fam.vertical ? out.xSpan.data() : out.zSpan.data()) + 4L * obj * fam.lines;
       long* start = crossingStart_.data();
       std::fill(start, start + fam.lines + 1, 0L);
 
@@ -146,45 +151,36 @@ void MarkerSet::faceApertures(const GridSpec& grid, FaceApertures& out, int rowL
       LineCrossing* cross = crossings_.data();
       forSegments([&](int line, const LineCrossing& c) { cross[start[line]++] = c; });
 
-      // The faces of rows [rowLo, rowHi) (z faces: face rows rowLo .. rowHi) zeroed
-      // contiguously per side (both families are row-major), then only wet faces written.
       const long work = static_cast<long>(fam.lines) * fam.faces;
-      const long rowWidth = fam.vertical ? nx + 1 : nx;
-      const long r0 = rowLo * rowWidth;
-      const long r1 = (fam.vertical ? rowHi : std::min(rowHi + 1, nz + 1)) * rowWidth;
-      // One parallel region for the clearing and the lines (the barrier between them is the
-      // clearing loop's own): fewer thread wake-ups per step than a region per loop.
-      double* s0 = base;
-      double* s1 = base + fam.sideStride;
-#pragma omp parallel if (work >= kParallelStream)
-      {
-#pragma omp for schedule(static)
-        for (long f = r0; f < r1; ++f) s0[f] = s1[f] = 0.0;
-#pragma omp for schedule(static)
-        for (int line = 0; line < fam.lines; ++line) {
-          LineCrossing* b = cross + (line == 0 ? 0 : start[line - 1]);
-          LineCrossing* e = cross + start[line];
-          // A total order (equal keys are identical crossings), so the result does not depend on
-          // the sort's internal order or on the thread count.
-          std::sort(b, e, [](const LineCrossing& u, const LineCrossing& v) {
-            if (u.at != v.at) return u.at < v.at;
-            if (u.winding != v.winding) return u.winding < v.winding;
-            return u.sides < v.sides;
-          });
-          for (int side = 0; side < 2; ++side) {
-            double* a = base + side * fam.sideStride + line * fam.lineStride;
-            int w = 0;
-            double runStart = 0.0;
-            for (const LineCrossing* c = b; c != e; ++c) {
-              if (!((c->sides >> side) & 1)) continue;
-              const int next = w + c->winding;
-              if (w == 0 && next != 0) runStart = c->at;
-              if (w != 0 && next == 0) addRun(runStart, c->at, fam, a);
-              w = next;
-            }
-            // A closed line crosses every line as often each way (the half-open rule classifies
-            // each vertex as before or after the line), so w ends at 0.
+#pragma omp parallel for schedule(static) if (work >= kParallelStream)
+      for (int line = 0; line < fam.lines; ++line) {
+        LineCrossing* b = cross + (line == 0 ? 0 : start[line - 1]);
+        LineCrossing* e = cross + start[line];
+        // A total order (equal keys are identical crossings), so the result does not depend on
+        // the sort's internal order or on the thread count.
+        std::sort(b, e, [](const LineCrossing& u, const LineCrossing& v) {
+          if (u.at != v.at) return u.at < v.at;
+          if (u.winding != v.winding) return u.winding < v.winding;
+          return u.sides < v.sides;
+        });
+        for (int side = 0; side < 2; ++side) {
+          double* a = base + side * fam.sideStride + line * fam.lineStride;
+          int* s = span + 2L * (static_cast<long>(side) * fam.lines + line);
+          for (long f = s[0]; f < s[1]; ++f) a[f * fam.faceStride] = 0.0;
+          int w = 0;
+          double runStart = 0.0;
+          int first = fam.faces, end = 0;
+          for (const LineCrossing* c = b; c != e; ++c) {
+            if (!((c->sides >> side) & 1)) continue;
+            const int next = w + c->winding;
+            if (w == 0 && next != 0) runStart = c->at;
+            if (w != 0 && next == 0) addRun(runStart, c->at, fam, a, first, end);
+            w = next;
           }
+          s[0] = first;
+          s[1] = end;
+          // A closed line crosses every line as often each way (the half-open rule classifies
+          // each vertex as before or after the line), so w ends at 0.
         }
       }
     }

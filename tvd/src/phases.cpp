@@ -149,22 +149,47 @@ void Phases::measure(const MarkerSet& markers) {
   for (int p = 0; p < count; ++p)  // phase p is body (object) p; fitted in place
     to[static_cast<std::size_t>(p)] = alpha[static_cast<std::size_t>(p)].data();
   fitTogether(to.data(), to.data(), count, cellLo(), cellHi(), kPhaseAbsent);
-  markers.faceApertures(grid, faces, rowLo, rowHi);
+  markers.faceApertures(grid, faces);
   if (count < 2) return;
-  // The faces of the rows (z faces: face rows rowLo .. rowHi), each side on its own.
+  // The bodies' apertures can sum to more than 1 only on faces that two of them wet: on each
+  // grid line and side, between the second-smallest start and the second-largest end of the
+  // bodies' wet spans (FaceApertures::xSpan). There they are fitted as fitTogether fits the
+  // cells (sum in phase order, scaled where it exceeds 1); elsewhere one aperture is at most 1
+  // and the fit is the identity, so it is skipped (the faces were 4 of the fit's 5 arrays).
+  const int P = count;
+  std::vector<int> los(static_cast<std::size_t>(P)), his(static_cast<std::size_t>(P));
   for (const bool xFaces : {true, false}) {
     auto& side = xFaces ? faces.x : faces.z;
-    const long n = static_cast<long>(side.size()) / count;  // one object: both sides
-    const long width = xFaces ? grid.nx + 1 : grid.nx;
+    const auto& span = xFaces ? faces.xSpan : faces.zSpan;
+    const long n = static_cast<long>(side.size()) / P;  // one object: both sides
     const long perSide = n / 2;
-    const long f0 = rowLo * width;
-    const long f1 =
-        std::min<long>(xFaces ? rowHi : rowHi + 1, xFaces ? grid.nz : grid.nz + 1) * width;
-    for (int s = 0; s < 2; ++s) {
-      for (int p = 0; p < count; ++p)
-        to[static_cast<std::size_t>(p)] = side.data() + p * n + s * perSide;
-      fitTogether(to.data(), to.data(), count, f0, f1, -1.0);
-    }
+    const int lines = xFaces ? grid.nx + 1 : grid.nz + 1;
+    const long lineStride = xFaces ? 1 : grid.nx;
+    const long faceStride = xFaces ? grid.nx + 1 : 1;
+    for (int s = 0; s < 2; ++s)
+      for (int line = 0; line < lines; ++line) {
+        int wet = 0;
+        for (int p = 0; p < P; ++p) {
+          const int* sp = &span[static_cast<std::size_t>(2L * ((2L * p + s) * lines + line))];
+          if (sp[0] >= sp[1]) continue;
+          los[static_cast<std::size_t>(wet)] = sp[0];
+          his[static_cast<std::size_t>(wet)] = sp[1];
+          ++wet;
+        }
+        if (wet < 2) continue;
+        std::nth_element(los.begin(), los.begin() + 1, los.begin() + wet);
+        std::nth_element(his.begin(), his.begin() + (wet - 2), his.begin() + wet);
+        const int f0 = los[1], f1 = his[static_cast<std::size_t>(wet - 2)];
+        for (int p = 0; p < P; ++p)
+          to[static_cast<std::size_t>(p)] = side.data() + p * n + s * perSide + line * lineStride;
+        for (int f = f0; f < f1; ++f) {
+          const long i = f * faceStride;
+          double total = 0.0;
+          for (int p = 0; p < P; ++p) total += to[static_cast<std::size_t>(p)][i];
+          if (total > 1.0)
+            for (int p = 0; p < P; ++p) to[static_cast<std::size_t>(p)][i] /= total;
+        }
+      }
   }
 }
 
@@ -480,8 +505,7 @@ long Phases::repair(const CellVolumes& volumes, const OldFractions& oldAlpha) {
           // only the orphan's density, which no line defines, is chosen.
           const double a0 = oldAlpha.at(p, c);
           const auto pp = static_cast<std::size_t>(p);
-          const bool packed =
-              rho0[pp] > 0.0 && !(s.rho[cc] <= kOrphanCompression * rho0[pp] * a0);
+          const bool packed = rho0[pp] > 0.0 && !(s.rho[cc] <= kOrphanCompression * rho0[pp] * a0);
           if (!packed) {
             a[cc] = a0 >= kPhaseAbsent ? a0 : kPhaseAbsent;
           } else {

@@ -42,6 +42,12 @@ struct FaceApertures {
   //! z faces (z = z0 + k dz, x in [x0 + i dx, x0 + (i+1) dx], k in [0, nz], i in [0, nx)):
   //! z[((o * 2 + side) * (nz + 1) + k) * nx + i]; side 0: from z < Z (cell k-1), 1: from z > Z.
   std::vector<double> z;
+  //! Wet span of every grid line, per object and side: faces [lo, hi) along the line hold every
+  //! face the object wets there (lo >= hi: none). x lines (i = 0 .. nx, faces along z):
+  //! xSpan[((o * 2 + side) * (nx + 1) + i) * 2 + {0: lo, 1: hi}]; z lines (k = 0 .. nz, faces
+  //! along x): zSpan likewise with nz + 1. Phases::measure fits the bodies' apertures together
+  //! only where two spans overlap (elsewhere one body's aperture alone is at most 1).
+  std::vector<int> xSpan, zSpan;
 
   //! Aperture of x face (i, k) of object o seen from `side` (0: cell i-1, 1: cell i).
   [[nodiscard]] double ax(int o, int side, int i, int k) const {
@@ -163,12 +169,11 @@ class MarkerSet {
   //! marker segments up to rounding. Parts of the lines outside the grid count (the winding
   //! number on the grid's faces is that of the whole line; nothing is clamped). out is resized
   //! (no allocation once its capacity suffices; scratch is reused likewise). Cost O(markers +
-  //! line crossings + objects * faces); crossings are sorted per grid line.
+  //! line crossings + objects * faces); crossings are sorted per grid line. An `out` of the
+  //! previous call's layout has only its wet spans (FaceApertures::xSpan) cleared, so the cost
+  //! does not grow with the faces outside the objects; its faces must be as that call (or a fit
+  //! that keeps zeros zero, Phases::measure) left them.
   void faceApertures(const GridSpec& grid, FaceApertures& out) const;
-  //! Same, where `out` is already sized for `grid` and zero outside grid rows [rowLo, rowHi)
-  //! (as a previous call with rows within these leaves it), and the lines lie within those rows
-  //! (rowSpan): only the faces of those rows (z faces rowLo .. rowHi) are cleared and written.
-  void faceApertures(const GridSpec& grid, FaceApertures& out, int rowLo, int rowHi) const;
   //! Grid rows [lo, hi) the lines span, points beyond the grid clamped onto it (the rows where
   //! rasterize can give a fraction); lo = hi = 0 without lines.
   void rowSpan(const GridSpec& grid, int& lo, int& hi) const;
