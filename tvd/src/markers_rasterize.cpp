@@ -159,14 +159,13 @@ void MarkerSet::rasterizeInto(const GridSpec& grid, std::vector<int>& owner,
   // Without normals the owners follow from the fractions (below), and the per-cell scratch is
   // not needed (16 B per cell less in the cut-cell mode).
   const bool scratch = normals != nullptr || fraction == nullptr;
+  // (Without the scratch every owner is written from the fractions at the end.)
   if (scratch) {
     best_.resize(ncell);
     total_.resize(ncell);
-  }
 #pragma omp parallel for schedule(static) if (cells >= kParallelStream)
-  for (long c = 0; c < cells; ++c) {
-    owner[c] = -1;
-    if (scratch) {
+    for (long c = 0; c < cells; ++c) {
+      owner[c] = -1;
       best_[c] = 0.0;
       total_[c] = 0.0;
     }
@@ -209,6 +208,23 @@ void MarkerSet::rasterizeInto(const GridSpec& grid, std::vector<int>& owner,
     // The same sums and comparisons, object by object, as the scratch arrays take them: an
     // object adds an exact 0 outside its box, which no comparison takes.
     const int objects = objects_;
+    if (objects == 2) {  // a striker and a target, the common case: selects instead of branches
+      const double* f0 = fraction[0];
+      const double* f1 = fraction[1];
+      int* own = owner.data();
+#pragma omp parallel for schedule(static) if (cells >= kParallelStream)
+      for (long c = 0; c < cells; ++c) {
+        const double a = f0[c], b = f1[c];
+        const double total = 0.0 + a + b;
+        const bool take0 = a > 0.0 + kTie;
+        const double best0 = take0 ? a : 0.0;
+        const bool take1 = b > best0 + kTie;
+        const double best = take1 ? b : best0;
+        const int o = take1 ? 1 : take0 ? 0 : -1;
+        own[c] = o >= 0 && 1.0 - total > best + kTie ? -1 : o;
+      }
+      return;
+    }
 #pragma omp parallel for schedule(static) if (cells >= kParallelStream)
     for (long c = 0; c < cells; ++c) {
       double best = 0.0, total = 0.0;

@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "cut_line.hpp"
 #include "hvi/tvd/ownership.hpp"
@@ -238,17 +241,36 @@ namespace {
 // The cells (in index order) for which need(c) holds, found by a parallel scan, so that the
 // serial passes of the repair visit only them. Each pass re-checks its condition when it gets to
 // a cell, and no pass can make a cell it did not list need it, so the result is that of a full
-// serial scan.
+// serial scan. One pass per chunk of cells, compacting without a branch (every cell's index is
+// written, the end advanced where it is needed: each chunk's hits stay inside its own part of
+// `found`), then the chunks' hits appended in order.
 template <class Need>
-void findCells(long lo, long hi, std::vector<unsigned char>& mask, std::vector<long>& out,
-               Need need) {
-  mask.resize(static_cast<std::size_t>(hi));
-  unsigned char* m = mask.data();
-#pragma omp parallel for schedule(static) if (hi - lo >= kParallelStream)
-  for (long c = lo; c < hi; ++c) m[c] = need(c) ? 1 : 0;
+void findCells(long lo, long hi, std::vector<long>& found, std::vector<long>& out, Need need) {
   out.clear();
-  for (long c = lo; c < hi; ++c)
-    if (m[c]) out.push_back(c);
+  if (hi <= lo) return;
+  const long n = hi - lo;
+  if (found.size() < static_cast<std::size_t>(n)) found.resize(static_cast<std::size_t>(n));
+  long* f = found.data();
+  constexpr int kMaxChunks = 64;
+  long hits[kMaxChunks];
+  int chunks = 1;
+#ifdef _OPENMP
+  if (n >= kParallelStream) chunks = std::clamp(omp_get_max_threads(), 1, kMaxChunks);
+#endif
+#pragma omp parallel for schedule(static, 1) num_threads(chunks) if (chunks > 1)
+  for (int t = 0; t < chunks; ++t) {
+    const long b = n * t / chunks, e = n * (t + 1) / chunks;
+    long k = b;
+    for (long i = b; i < e; ++i) {
+      f[k] = lo + i;
+      k += need(lo + i) ? 1 : 0;
+    }
+    hits[t] = k - b;
+  }
+  for (int t = 0; t < chunks; ++t) {
+    const long b = n * t / chunks;
+    out.insert(out.end(), f + b, f + b + hits[t]);
+  }
 }
 
 }  // namespace
@@ -284,7 +306,7 @@ void Phases::settle(const CellVolumes& volumes, int p) {
   }();
   const double* ap = a.data();
   const double* wp = w.data();
-  findCells(cellLo(), cellHi(), mask_, todo_, [&](long c) { return ap[c] - wp[c] > kTiny; });
+  findCells(cellLo(), cellHi(), found_, todo_, [&](long c) { return ap[c] - wp[c] > kTiny; });
   for (const long cell : todo_) {
     const int i = static_cast<int>(cell % nx), k = static_cast<int>(cell / nx);
     const auto c = static_cast<std::size_t>(cell);
@@ -343,7 +365,7 @@ void Phases::route(const CellVolumes& volumes, int p) {
   const double* wp = w.data();
   const double* rp = s.rho.data();
   // Nothing to do unless the phase has both a deficit and an excess left.
-  findCells(cellLo(), cellHi(), mask_, todo_, [&](long c) {
+  findCells(cellLo(), cellHi(), found_, todo_, [&](long c) {
     return std::abs(ap[c] - wp[c]) > kTiny && (ap[c] > wp[c] || (wp[c] > 0.0 && rp[c] > 0.0));
   });
   // Routing rearranges volume, it creates none: it can close the mismatch only where what the
@@ -465,7 +487,7 @@ long Phases::repair(const CellVolumes& volumes, const OldFractions& oldAlpha) {
     double* comp[4] = {s.rho.data(), s.mx.data(), s.mz.data(), s.E.data()};
     const double* ap = a.data();
     const double* rp = s.rho.data();
-    findCells(cellLo(), cellHi(), mask_, todo_, [&](long c) {
+    findCells(cellLo(), cellHi(), found_, todo_, [&](long c) {
       const bool has = rp[c] != 0.0;
       return (ap[c] < kPhaseAbsent && has) || (ap[c] >= kPhaseAbsent && (!has || ap[c] < 0.5));
     });

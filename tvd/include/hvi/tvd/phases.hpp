@@ -101,7 +101,7 @@ struct Phases {
   void mixture(Conserved& U, bool energy = true) const;
 
  private:
-  std::vector<unsigned char> mask_;  // repair scratch: cells to visit
+  std::vector<long> found_;  // repair scratch: cells to visit, compacted per chunk
   std::vector<long> todo_;
   std::vector<unsigned> stamp_;  // route scratch: BFS visit stamps and parents per cell
   std::vector<long> parent_, queue_;
