@@ -274,6 +274,26 @@ void TvdSolver::markOwnCells() {
   }
   const double* rhoStep = rhoStep_.data();
   // A cell is full when its live phases cover it to the fit's round-off (kOwnFilled).
+  if (P == 2) {  // two bodies, the common case: the same sums and values by selects
+    double* a0 = alpha[0];
+    double* a1 = alpha[1];
+    const double* r0 = rho[0];
+    const double* r1 = rho[1];
+    const double s0 = rhoStep[0], s1 = rhoStep[1];
+#pragma omp parallel for schedule(static) num_threads(threads_) if (c1 - c0 >= kParallelStream)
+    for (long c = c0; c < c1; ++c) {
+      const double x0 = a0[c], x1 = a1[c];
+      // A present phase (a > 0) below the time-step density is dropped, else it is live;
+      // adding an exact 0 for the others leaves the sum's bits as the branches left them.
+      const bool in0 = x0 > 0.0, in1 = x1 > 0.0;
+      const bool live0 = in0 && r0[c] >= s0 * x0, live1 = in1 && r1[c] >= s1 * x1;
+      const double live = 0.0 + (live0 ? x0 : 0.0) + (live1 ? x1 : 0.0);
+      const bool full = live >= kOwnFilled;
+      a0[c] = full ? 1.0 : in0 && !live0 ? 0.0 : x0;
+      a1[c] = full ? 1.0 : in1 && !live1 ? 0.0 : x1;
+    }
+    return;
+  }
 #pragma omp parallel for schedule(static) num_threads(threads_) if (c1 - c0 >= kParallelStream)
   for (long c = c0; c < c1; ++c) {
     double live = 0.0;
