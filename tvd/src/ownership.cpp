@@ -80,7 +80,8 @@ void Ownership::restore(std::vector<int> owner, std::vector<Vec2> normal,
 // gap with points until memory ran out). Every cell that sets the step moves at most cfl <= 0.5
 // of a cell per step, so each component is clamped to one cell per step: it bounds such cells
 // and leaves every cell that sets the step unchanged.
-void Ownership::centredVelocity(const Conserved& U, double dt, int rowLo, int rowHi) {
+void Ownership::centredVelocity(const Conserved* parts, int count, double dt, int rowLo,
+                                int rowHi) {
   const long cells = cells_.grid.cells();
   const long c0 = static_cast<long>(rowLo) * cells_.grid.nx;
   const long c1 = static_cast<long>(rowHi) * cells_.grid.nx;
@@ -90,26 +91,45 @@ void Ownership::centredVelocity(const Conserved& U, double dt, int rowLo, int ro
   double* vx = midX();
   double* vz = midZ();
   const double *vx0 = vxOld_.data(), *vz0 = vzOld_.data();
-  const double *rho = U.rho.data(), *mx = U.mx.data(), *mz = U.mz.data();
+  const auto P = static_cast<std::size_t>(std::max(count, 1));
+  partRho_.resize(P);
+  partMx_.resize(P);
+  partMz_.resize(P);
+  for (std::size_t p = 0; p < P; ++p) {
+    partRho_[p] = parts[p].rho.data();
+    partMx_[p] = parts[p].mx.data();
+    partMz_[p] = parts[p].mz.data();
+  }
+  const double* const* rhoP = partRho_.data();
+  const double* const* mxP = partMx_.data();
+  const double* const* mzP = partMz_.data();
+  const int parts1 = static_cast<int>(P);
   const int* owner = owner_.data();
   const double vmax =
       dt > 0.0 ? std::min(cells_.grid.dx, cells_.grid.dz) / dt : std::numeric_limits<double>::max();
 #pragma omp parallel for schedule(static) num_threads(threads_) if (c1 - c0 >= kParallelStream)
   for (long c = c0; c < c1; ++c) {
-    if ((!cutCells_ && owner[c] < 0) || !(rho[c] > 0.0)) {
+    // The mixture in phase order (one part: its own state, unchanged).
+    double rho = rhoP[0][c], mx = mxP[0][c], mz = mzP[0][c];
+    for (int p = 1; p < parts1; ++p) {
+      rho += rhoP[p][c];
+      mx += mxP[p][c];
+      mz += mzP[p][c];
+    }
+    if ((!cutCells_ && owner[c] < 0) || !(rho > 0.0)) {
       vx[c] = vz[c] = 0.0;
       continue;
     }
     if (cutCells_) {
       // No start velocity (NaN: the cell held no material at the step's start, and the phase
       // entered it through an opened face): the end velocity alone.
-      const double ux = std::clamp(mx[c] / rho[c], -vmax, vmax);
-      const double uz = std::clamp(mz[c] / rho[c], -vmax, vmax);
+      const double ux = std::clamp(mx / rho, -vmax, vmax);
+      const double uz = std::clamp(mz / rho, -vmax, vmax);
       vx[c] = std::isnan(vx0[c]) ? ux : 0.5 * (std::clamp(vx0[c], -vmax, vmax) + ux);
       vz[c] = std::isnan(vz0[c]) ? uz : 0.5 * (std::clamp(vz0[c], -vmax, vmax) + uz);
     } else {
-      vx[c] = 0.5 * (vx0[c] + mx[c] / rho[c]);
-      vz[c] = 0.5 * (vz0[c] + mz[c] / rho[c]);
+      vx[c] = 0.5 * (vx0[c] + mx / rho);
+      vz[c] = 0.5 * (vz0[c] + mz / rho);
     }
     known[c] = 1;
   }
@@ -163,9 +183,9 @@ void Ownership::extendIntoVacuum(int layers, int rowLo, int rowHi) {
   }
 }
 
-void Ownership::advanceLines(const Conserved& U, double dt, int rowLo, int rowHi) {
+void Ownership::advanceLines(const Conserved* parts, int count, double dt, int rowLo, int rowHi) {
   const GridSpec& g = cells_.grid;
-  centredVelocity(U, dt, rowLo, rowHi);
+  centredVelocity(parts, count, dt, rowLo, rowHi);
   extendIntoVacuum(2, rowLo, rowHi);
   // The cut-cell mode: each line reads its own body's cells (the fractions lent at the
   // step's start, Phases::alpha); the whole-cell mode reads every cell, as the study did.
@@ -175,8 +195,8 @@ void Ownership::advanceLines(const Conserved& U, double dt, int rowLo, int rowHi
   markers_.redistribute(g);
 }
 
-void Ownership::move(const Conserved& U, double dt, int rowLo, int rowHi) {
-  advanceLines(U, dt, rowLo, rowHi);
+void Ownership::move(const Conserved* parts, int count, double dt, int rowLo, int rowHi) {
+  advanceLines(parts, count, dt, rowLo, rowHi);
   // The fractions are zero outside the rows (the lines never left them): only those cleared.
   markers_.rasterizeFractions(cells_.grid, owner_, fraction_, rowLo, rowHi);
 }
@@ -208,7 +228,7 @@ void Ownership::remeasure() {
 void Ownership::update(Conserved& U, double dt, Budget& booked) {
   const GridSpec& g = cells_.grid;
   const long cells = g.cells();
-  advanceLines(U, dt, 0, g.nz);
+  advanceLines(&U, 1, dt, 0, g.nz);
   markers_.rasterize(g, ownerNew_, normalNew_);
   detail::interfaceNormals(markers_, g, ownerNew_, normalNew_, normalLength_);
 

@@ -196,7 +196,7 @@ void Phases::measure(const MarkerSet& markers) {
   }
 }
 
-void Phases::mixture(Conserved& U, bool energy) const {
+void Phases::mixture(Conserved& U) const {
   const auto cells = static_cast<std::size_t>(grid.cells());
   for (auto* v : {&U.rho, &U.mx, &U.mz, &U.E}) v->resize(cells);  // zero where new
   const long c0 = cellLo(), c1 = cellHi();
@@ -206,9 +206,8 @@ void Phases::mixture(Conserved& U, bool energy) const {
   // gets the same cells in every loop and needs no barrier between them (nowait); the sums per
   // cell keep their order, phase by phase (the same bits as a region per loop, which woke the
   // threads 2 x 4 times per call: with a passive wait policy that cost more than the copies).
-  const int components = energy ? 4 : 3;
 #pragma omp parallel if (n >= kParallelStream)
-  for (int k = 0; k < components; ++k) {
+  for (int k = 0; k < 4; ++k) {
     // Component by component, phase by phase: contiguous streams (the phases are few).
     double* o = out[k];
     auto component = [&](int p) {

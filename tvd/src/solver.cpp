@@ -124,9 +124,10 @@ void TvdSolver::setUpGrid(const cases::Scene& scene) {
         "tvd.cfl = {}: must be in (0, 0.5] (the positivity fallback flux needs CFL <= 1/2)",
         p.cfl));
   if (!(p.vacuumDensity >= 0.0) || p.vacuumDensity >= 1.0)
-    throw InputError(fmt::format("tvd.vacuum_density = {}: must be a fraction of rho0 in [0, 1) "
-                                 "(0: the interface mode's default)",
-                                 p.vacuumDensity));
+    throw InputError(
+        fmt::format("tvd.vacuum_density = {}: must be a fraction of rho0 in [0, 1) "
+                    "(0: the interface mode's default)",
+                    p.vacuumDensity));
   if (!(options_.entropyFix >= 0.0) || options_.contactIterations < 0)
     throw InputError("tvd options: entropyFix must be >= 0 and contactIterations >= 0");
   const double lx = d.xmax - d.xmin, lz = d.zmax - d.zmin;
@@ -394,19 +395,15 @@ double TvdSolver::advance(double tStop) {
     sweepCut(step_ % 2 == 0 ? 0 : 1, dt);
     sweepCut(step_ % 2 == 0 ? 1 : 0, dt);
     dropEmptiedLines();
-    // The markers move with the mixture velocity (one phase: its own state, no copy needed).
     // The old fractions, for the repair, kept where nonzero; the lines' new fractions go into
     // their buffers (zero outside the rows, as move requires), which measurePhases takes back.
     alphaOld_.keep(phases_);
     if (options_.ownBodyVelocity) markOwnCells();
     ownership_.lendFractions(std::move(phases_.alpha));
     phases_.alpha.clear();
-    if (phases_.count == 1) {
-      ownership_.move(phases_.q.front(), dt, phases_.rowLo, phases_.rowHi);
-    } else {
-      phases_.mixture(U_, false);  // the markers need the velocity; the energy comes below
-      ownership_.move(U_, dt, phases_.rowLo, phases_.rowHi);
-    }
+    // The markers move with the mixture velocity, summed from the phases where it is read (the
+    // mixture state itself is formed once, below, after the repair).
+    ownership_.move(phases_.q.data(), phases_.count, dt, phases_.rowLo, phases_.rowHi);
     measurePhases();
     orphans_ += phases_.repair(cellVolumes_, alphaOld_);
     if (options_.closedOutflow && options_.releaseSlivers) releaseSlivers(dt);

@@ -329,7 +329,7 @@ TEST(TvdCutCells, RoundOffMassDoesNotFlingTheMarkerLines) {
       U.mz[c] = 1e-14;
     }
   const double dt = 0.01;  // the clamp: h / dt = 5 cm/us
-  own.move(U, dt, 0, g.nz);
+  own.move(&U, 1, dt, 0, g.nz);
   double worst = 0.0;
   for (const auto& l : own.markers().lines())
     for (Vec2 p : l.points) worst = std::max(worst, std::hypot(p.x, p.z) - R);

@@ -70,8 +70,10 @@ class Ownership {
   //! not touched. The material
   //! and the lines lie within grid rows [rowLo, rowHi), at least two rows from their ends (or
   //! at the grid's edge), and so does every velocity this mode ever set (Phases::rowLo): only
-  //! those rows are visited.
-  void move(const Conserved& U, double dt, int rowLo, int rowHi);
+  //! those rows are visited. The flow state is the mixture of the `count` phase states `parts`
+  //! (Phases::q: summed per cell in phase order, as Phases::mixture sums them), taken where it
+  //! is read instead of through a mixture array written for it.
+  void move(const Conserved* parts, int count, double dt, int rowLo, int rowHi);
   //! Per object o and cell c (fractions()[o][c]): the part of the cell the object covers, as
   //! the last rasterisation (setUp, move, remeasure) left it, until taken.
   [[nodiscard]] const std::vector<std::vector<double>>& fractions() const { return fraction_; }
@@ -120,9 +122,10 @@ class Ownership {
     long count = 0;
   };
   // Moves the lines with the time-centred velocity and redistributes them (both modes).
-  void advanceLines(const Conserved& U, double dt, int rowLo, int rowHi);
-  void centredVelocity(const Conserved& U, double dt, int rowLo, int rowHi);
+  void advanceLines(const Conserved* parts, int count, double dt, int rowLo, int rowHi);
+  void centredVelocity(const Conserved* parts, int count, double dt, int rowLo, int rowHi);
   void extendIntoVacuum(int layers, int rowLo, int rowHi);
+  std::vector<const double*> partRho_, partMx_, partMz_;  // centredVelocity's phase arrays
   [[nodiscard]] Change fillFor(long cell, int to, const Conserved& U,
                                std::vector<ObjectSum>& sums) const;
   [[nodiscard]] std::vector<ObjectSum> sumObjects(const Conserved& U) const;
@@ -145,10 +148,10 @@ class Ownership {
   double* midX() { return cutCells_ ? vxOld_.data() : vxMid_.data(); }
   double* midZ() { return cutCells_ ? vzOld_.data() : vzMid_.data(); }
   std::vector<Change> changes_;
-  std::vector<signed char> known_;    // cell has a velocity for the markers
-  std::vector<long> fresh_;           // cells given a velocity in this ring
+  std::vector<signed char> known_;        // cell has a velocity for the markers
+  std::vector<long> fresh_;               // cells given a velocity in this ring
   std::vector<unsigned char> nearKnown_;  // per column of a row: a known cell within a row
-  std::vector<double> normalLength_;  // marker length per cell
+  std::vector<double> normalLength_;      // marker length per cell
   bool cutCells_ = false;
   std::array<bool, 4> open_{};  // cut-cell mode: the outflow sides (MarkerSet::advect)
   std::array<bool, 4> cut_{};   // cut-cell mode: lines cut there (MarkerSet::clipToSides)

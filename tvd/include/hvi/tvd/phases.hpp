@@ -96,9 +96,8 @@ struct Phases {
   //! cells with an excess along a path of face neighbours holding the phase, each hop moving the
   //! volume at its own cell's state (docs/tvd.md, "Uniform motion").
   void route(const CellVolumes& volumes, int p);
-  //! Mixture state: the sum of the phases' q (rows [rowLo, rowHi); U is zero outside);
-  //! without `energy`, U.E is left as it is.
-  void mixture(Conserved& U, bool energy = true) const;
+  //! Mixture state: the sum of the phases' q (rows [rowLo, rowHi); U is zero outside).
+  void mixture(Conserved& U) const;
 
  private:
   std::vector<long> found_;  // repair scratch: cells to visit, compacted per chunk
