@@ -17,13 +17,13 @@ namespace {
 constexpr std::uint64_t kMagic = 0x31304456544956ULL;  // "VITVD01" little-endian tag
 // 7 (written with the effect fracture only; every other scene writes exactly what it wrote
 // before): as 6, and a fracture flag after the strength flag, and each solid phase's rho_p D after
-// its four strength arrays; 6 (written with the effect strength or the cut-cell mode; a whole-cell scene without strength
-// still writes 4, unchanged): as 5, and every phase's outflow mass after the orphan count
-// (phaseOutflowMass); 5 (read too): a
-// strength flag after the interface-mode flag and rho times the deviator and the plastic strain
-// at the end; 4: an interface-mode flag after the markers flag, and the cut-cell phases after the
-// marker lines; 3 (read too): the outflow budget after the ledger (Ledger::outflow); 2 (read too)
-// had none, its boundary budget held the outflow sides and the walls together.
+// its four strength arrays; 6 (written with the effect strength or the cut-cell mode; a whole-cell
+// scene without strength still writes 4, unchanged): as 5, and every phase's outflow mass after the
+// orphan count (phaseOutflowMass); 5 (read too): a strength flag after the interface-mode flag and
+// rho times the deviator and the plastic strain at the end; 4: an interface-mode flag after the
+// markers flag, and the cut-cell phases after the marker lines; 3 (read too): the outflow budget
+// after the ledger (Ledger::outflow); 2 (read too) had none, its boundary budget held the outflow
+// sides and the walls together.
 constexpr std::uint32_t kVersion = 7;
 constexpr std::uint32_t kVersionWithoutFracture = 6;
 constexpr std::uint32_t kVersionWithoutStrength = 4;
@@ -70,6 +70,7 @@ void TvdSolver::writeCheckpoint(std::ostream& out) const {
   for (const Budget* b : {&ledger_.boundary, &ledger_.interfaces, &ledger_.ownerChanges,
                           &ledger_.floors, &ledger_.outflow})
     putBudget(w, *b);
+  syncMixture();
   putConserved(w, U_);
   if (markersOn_) {
     w.array(ownership_.owner());
@@ -198,6 +199,7 @@ void TvdSolver::readCheckpoint(std::istream& in) {
     }
   }
   U_ = std::move(U);
+  mixtureStale_ = false;
   time_ = t;
   dt0_ = dt0;
   step_ = static_cast<long>(step);

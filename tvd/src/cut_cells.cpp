@@ -39,6 +39,7 @@ void TvdSolver::initialiseCut(const cases::Scene& scene) {
   }
   volumeFresh_ = true;
   phases_.mixture(U_);
+  mixtureStale_ = false;
 }
 
 // Largest signal speed over every phase cell, the check that each is physical, and (for the
@@ -96,16 +97,24 @@ double TvdSolver::signalSpeedCut(double* vx, double* vz, long* worstCell) const 
         q.mz[c], q.E[c]));
   }
   if (vx != nullptr) {
+    // The mixture velocity from the phases' sums in phase order (Phases::mixture's values).
+    const int P = phases_.count;
+    const Conserved* parts = phases_.q.data();
 #pragma omp parallel for schedule(static) num_threads(threads_) if (c1 - c0 >= kParallelCells)
     for (long c = c0; c < c1; ++c) {
       const auto cc = static_cast<std::size_t>(c);
+      double r = parts[0].rho[cc], mx = parts[0].mx[cc], mz = parts[0].mz[cc];
+      for (int p = 1; p < P; ++p) {
+        r += parts[p].rho[cc];
+        mx += parts[p].mx[cc];
+        mz += parts[p].mz[cc];
+      }
       // A cell without material has no start velocity (NaN): one the phase enters during the
       // step (an opened cell, CutLineSolver::openFaces) moves its markers with its end velocity
       // alone (Ownership::centredVelocity), not half of it.
-      const double r = U_.rho[cc];
       constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
-      vx[c] = r > 0.0 ? U_.mx[cc] / r : kNone;
-      vz[c] = r > 0.0 ? U_.mz[cc] / r : kNone;
+      vx[c] = r > 0.0 ? mx / r : kNone;
+      vz[c] = r > 0.0 ? mz / r : kNone;
     }
   }
   if (worstCell != nullptr) *worstCell = worst;

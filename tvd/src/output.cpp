@@ -10,6 +10,7 @@
 namespace hvi::tvd {
 
 Snapshot TvdSolver::snapshot() const {
+  syncMixture();
   const long cells = grid_.cells();
   const auto n = static_cast<std::size_t>(cells);
   Snapshot s = makeSnapshot("tvd", Snapshot::Kind::Grid, geometry_, time_, step_);
@@ -39,8 +40,7 @@ Snapshot TvdSolver::snapshot() const {
               object = -1;  // below the vacuum density: reported as vacuum
             }
             // Cut cells: the owning material's own state on its part of the cell.
-            const double a =
-                cut_ ? phases_.alpha[static_cast<std::size_t>(id)][cc] : 1.0;
+            const double a = cut_ ? phases_.alpha[static_cast<std::size_t>(id)][cc] : 1.0;
             if (!(a >= kPhaseAbsent)) continue;
             const Conserved& q = cut_ ? phases_.q[static_cast<std::size_t>(id)] : U_;
             const double r = q.rho[cc] / a;
@@ -48,8 +48,8 @@ Snapshot TvdSolver::snapshot() const {
             CellState st = detail::cellState(eos, r, q.mx[cc] / a, q.mz[cc] / a, q.E[cc] / a);
             // Effect fracture: the pressure the sweeps see (tension limited, scaled by 1 - D).
             if (fractureSpall != nullptr && fractureSpall[id] >= 0.0) {
-              const auto& rd = cut_ ? strength_->phases[static_cast<std::size_t>(id)].rq
-                                    : strength_->rq;
+              const auto& rd =
+                  cut_ ? strength_->phases[static_cast<std::size_t>(id)].rq : strength_->rq;
               detail::limitTension(st, rd[detail::kDamage][cc] / q.rho[cc], fractureSpall[id],
                                    r >= strength_->rhoIntact[static_cast<std::size_t>(id)]);
             }
@@ -153,20 +153,36 @@ Snapshot TvdSolver::snapshot() const {
 Totals TvdSolver::totals() const {
   const long cells = grid_.cells();
   double mass = 0.0, px = 0.0, pz = 0.0, kin = 0.0, eint = 0.0;
+  // A mixture not formed since the step (cut cells, syncMixture): summed from the phases here,
+  // in phase order, as Phases::mixture sums it (the same values; zero outside its rows).
+  const int P = mixtureStale_ ? phases_.count : 0;
+  const Conserved* parts = phases_.q.data();
 #pragma omp parallel for schedule(static) reduction(+ : mass, px, pz, kin, eint) \
     num_threads(threads_) if (grid_.cells() >= kParallelCells)
   for (long c = 0; c < cells; ++c) {
     const auto cc = static_cast<std::size_t>(c);
-    const double r = U_.rho[cc];
+    double r = U_.rho[cc], mx = U_.mx[cc], mz = U_.mz[cc], E = U_.E[cc];
+    if (P > 0) {
+      r = parts[0].rho[cc];
+      mx = parts[0].mx[cc];
+      mz = parts[0].mz[cc];
+      E = parts[0].E[cc];
+      for (int p = 1; p < P; ++p) {
+        r += parts[p].rho[cc];
+        mx += parts[p].mx[cc];
+        mz += parts[p].mz[cc];
+        E += parts[p].E[cc];
+      }
+    }
     if (r < 0.0) mass += cellVolume(c) * r;  // vacuum of negative mass (cut cells), at rest
     if (!(r > 0.0)) continue;
     const double vol = cellVolume(c);
-    const double k = 0.5 * (U_.mx[cc] * U_.mx[cc] + U_.mz[cc] * U_.mz[cc]) / r;
+    const double k = 0.5 * (mx * mx + mz * mz) / r;
     mass += vol * r;
-    px += vol * U_.mx[cc];
-    pz += vol * U_.mz[cc];
+    px += vol * mx;
+    pz += vol * mz;
     kin += vol * k;
-    eint += vol * (U_.E[cc] - k);
+    eint += vol * (E - k);
   }
   const Totals out = outflow();
   Totals t;

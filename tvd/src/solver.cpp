@@ -379,6 +379,7 @@ double TvdSolver::advance(double tStop) {
   if (dt0_ == 0.0) dt0_ = dt;
   if (!(dt >= kDtCollapseFraction * dt0_)) {
     const auto c = static_cast<std::size_t>(std::max(worst, 0L));
+    syncMixture();
     throw SimulationError(fmt::format(
         "tvd: step {}, t = {:.6g} us: time step collapsed to {:.3g} us (first step {:.3g} us); "
         "fastest cell (i={}, k={}): rho = {:.6g}, signal speed {:.6g} cm/us",
@@ -408,7 +409,7 @@ double TvdSolver::advance(double tStop) {
     orphans_ += phases_.repair(cellVolumes_, alphaOld_);
     if (options_.closedOutflow && options_.releaseSlivers) releaseSlivers(dt);
     volumeFresh_ = true;  // the first sweep of the next step starts from alpha
-    phases_.mixture(U_);
+    mixtureStale_ = true;
   } else if (step_ % 2 == 0) {
     sweep(0, dt);
     sweep(1, dt);

@@ -79,6 +79,7 @@ void TvdSolver::strengthStepCut(double dt) {
   };
 
   // 1. Live cells and the mixture velocity (U_ is the mixture of the phases).
+  syncMixture();
 #pragma omp parallel for schedule(static) num_threads(threads_) if (c1 - c0 >= kParallelCells)
   for (long c = c0; c < c1; ++c) {
     const auto cc = static_cast<std::size_t>(c);
@@ -141,11 +142,10 @@ void TvdSolver::strengthStepCut(double dt) {
             const eos::EosState es = eos.state(r, e);
             // Effect fracture: the pressure the sweeps saw (tension limited by the spall
             // strength and scaled by 1 - D), and the yield scaled by 1 - D.
-            const double d =
-                fracture ? std::clamp(ph.rq[detail::kDamage][cc] / m, 0.0, 1.0) : 0.0;
-            const double pr =
-                fracture ? strength::effectivePressure(es.pressure, d, sm.spallStrength)
-                         : es.pressure;
+            const double d = fracture ? std::clamp(ph.rq[detail::kDamage][cc] / m, 0.0, 1.0) : 0.0;
+            const double pr = fracture
+                                  ? strength::effectivePressure(es.pressure, d, sm.spallStrength)
+                                  : es.pressure;
             const double eta = r / ph.rho0;
             const double temp = sm.thermal.temperature(eta, e);
             const double G = strength::shearModulus(sm, pr, temp, eta);
@@ -244,6 +244,7 @@ void TvdSolver::strengthStepCut(double dt) {
     }
   }
   phases_.mixture(U_);
+  mixtureStale_ = false;
 
   // The domain's edges into the ledger.
   const double twoPi = 2.0 * std::numbers::pi;

@@ -66,8 +66,9 @@ struct Options {
   bool ownBodyVelocity = true;
   //! Cut-cell mode with closedOutflow: a phase in an edge cell of an outflow side that moves
   //! out, holds less of the cell than leaves in one step at its speed and no longer reaches the
-  //! cell's inner face is released through the side, booked as outflow (docs/tvd.md "Slivers at outflow sides"). false: it stays (the
-  //! side holds it as a wall while its lines, beyond the side, give it a vanishing fraction).
+  //! cell's inner face is released through the side, booked as outflow (docs/tvd.md "Slivers at
+  //! outflow sides"). false: it stays (the side holds it as a wall while its lines, beyond the
+  //! side, give it a vanishing fraction).
   bool releaseSlivers = true;
 };
 
@@ -106,10 +107,16 @@ class TvdSolver final : public Solver {
   // Lower-level access (tests, tools).
   [[nodiscard]] const GridSpec& grid() const { return grid_; }
   [[nodiscard]] Geometry geometry() const { return geometry_; }
-  [[nodiscard]] const Conserved& conserved() const { return U_; }
+  [[nodiscard]] const Conserved& conserved() const {
+    syncMixture();
+    return U_;
+  }
   //! Mutable state for tests that set up states the scene cannot express. The caller keeps it
   //! physical (rho > 0 in material cells, zero in vacuum cells of a marker run).
-  Conserved& conservedForTesting() { return U_; }
+  Conserved& conservedForTesting() {
+    syncMixture();
+    return U_;
+  }
   [[nodiscard]] bool markersActive() const { return markersOn_; }
   //! Conservative cut-cell interfaces (each phase its own state on its part of the cells).
   [[nodiscard]] bool cutCells() const { return cut_; }
@@ -182,12 +189,11 @@ class TvdSolver final : public Solver {
   [[nodiscard]] Ownership::ObjectState stateAtCentre(const cases::Scene& scene, std::size_t body,
                                                      std::size_t cell) const;
   // Adds `weight` times the conserved form of state `b` to cell c of U.
-  static void addState(Conserved& U, std::size_t c, const Ownership::ObjectState& b,
-                       double weight);
-  void measurePhases();  // phases_ geometry from the marker lines (cut-cell mode)
-  void markOwnCells();   // cut-cell mode: the cells each line reads its velocity from
+  static void addState(Conserved& U, std::size_t c, const Ownership::ObjectState& b, double weight);
+  void measurePhases();            // phases_ geometry from the marker lines (cut-cell mode)
+  void markOwnCells();             // cut-cell mode: the cells each line reads its velocity from
   void releaseSlivers(double dt);  // cut-cell mode, no re-entry: slivers leave through the side
-  void dropEmptiedLines();  // cut-cell mode: the lines of bodies that have all left
+  void dropEmptiedLines();         // cut-cell mode: the lines of bodies that have all left
   double signalSpeedCut(double* vx, double* vz, long* worstCell) const;
   // Cut cells: each velocity component of a phase cell below the time-step density limited to
   // one cell per step (docs/tvd.md, "Thin cells faster than the step"), booked under floors.
@@ -213,7 +219,7 @@ class TvdSolver final : public Solver {
   std::vector<cases::Material> sceneMaterials_;  // the scene's materials
   std::vector<int> sceneMaterialOf_;             // per entry of materials_: its scene material
   std::vector<std::string> bodyNames_;
-  std::vector<int> objectMaterial_;                  // material of each body (object)
+  std::vector<int> objectMaterial_;                 // material of each body (object)
   std::vector<Ownership::ObjectState> bodyStates_;  // initial state of each body (object)
   std::vector<double> rhoCut_;  // per material: below this density a cell is vacuum
   // Per material: below kThinFraction * rho0 a cell is nearly empty; if the positivity fallback
@@ -236,8 +242,17 @@ class TvdSolver final : public Solver {
   bool markersOn_ = false;  // effect material_interfaces: marker lines and ownership_
   bool phaseOn_ = false;    // effect phase_bookkeeping: vapour fraction and phase in snapshots
 
-  // State.
-  Conserved U_;
+  // State. In the cut-cell mode U_ is the mixture of the phases (Phases::mixture), formed when
+  // something reads it (syncMixture) rather than after every step: the step's own readers
+  // (the signal speed's velocities, totals) sum the phases where they read them, to the same
+  // bits. mixtureStale_: the phases changed since U_ was formed.
+  void syncMixture() const {
+    if (!mixtureStale_) return;
+    phases_.mixture(U_);
+    mixtureStale_ = false;
+  }
+  mutable Conserved U_;
+  mutable bool mixtureStale_ = false;
   double time_ = 0.0;
   long step_ = 0;
   double dt0_ = 0.0;  // first step's dt: the reference of the dt-collapse check
