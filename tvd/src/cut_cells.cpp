@@ -103,12 +103,9 @@ double TvdSolver::signalSpeedCut(double* vx, double* vz, long* worstCell) const 
 #pragma omp parallel for schedule(static) num_threads(threads_) if (c1 - c0 >= kParallelCells)
     for (long c = c0; c < c1; ++c) {
       const auto cc = static_cast<std::size_t>(c);
-      double r = parts[0].rho[cc], mx = parts[0].mx[cc], mz = parts[0].mz[cc];
-      for (int p = 1; p < P; ++p) {
-        r += parts[p].rho[cc];
-        mx += parts[p].mx[cc];
-        mz += parts[p].mz[cc];
-      }
+      const double r = mixtureAt(parts, P, &Conserved::rho, cc);
+      const double mx = mixtureAt(parts, P, &Conserved::mx, cc);
+      const double mz = mixtureAt(parts, P, &Conserved::mz, cc);
       // A cell without material has no start velocity (NaN): one the phase enters during the
       // step (an opened cell, CutLineSolver::openFaces) moves its markers with its end velocity
       // alone (Ownership::centredVelocity), not half of it.

@@ -208,7 +208,10 @@ void MarkerSet::rasterizeInto(const GridSpec& grid, std::vector<int>& owner,
     // The same sums and comparisons, object by object, as the scratch arrays take them: an
     // object adds an exact 0 outside its box, which no comparison takes.
     const int objects = objects_;
-    if (objects == 2) {  // a striker and a target, the common case: selects instead of branches
+    // A striker and a target, the common case, by selects instead of branches: the general loop
+    // over the objects, with branches or with selects alike, took twice its time (perf, variant
+    // 1 conservative: 3.5-4.3 % of the run against 2.1 %).
+    if (objects == 2) {
       const double* f0 = fraction[0];
       const double* f1 = fraction[1];
       int* own = owner.data();

@@ -161,19 +161,10 @@ Totals TvdSolver::totals() const {
     num_threads(threads_) if (grid_.cells() >= kParallelCells)
   for (long c = 0; c < cells; ++c) {
     const auto cc = static_cast<std::size_t>(c);
-    double r = U_.rho[cc], mx = U_.mx[cc], mz = U_.mz[cc], E = U_.E[cc];
-    if (P > 0) {
-      r = parts[0].rho[cc];
-      mx = parts[0].mx[cc];
-      mz = parts[0].mz[cc];
-      E = parts[0].E[cc];
-      for (int p = 1; p < P; ++p) {
-        r += parts[p].rho[cc];
-        mx += parts[p].mx[cc];
-        mz += parts[p].mz[cc];
-        E += parts[p].E[cc];
-      }
-    }
+    const double r = P > 0 ? mixtureAt(parts, P, &Conserved::rho, cc) : U_.rho[cc];
+    const double mx = P > 0 ? mixtureAt(parts, P, &Conserved::mx, cc) : U_.mx[cc];
+    const double mz = P > 0 ? mixtureAt(parts, P, &Conserved::mz, cc) : U_.mz[cc];
+    const double E = P > 0 ? mixtureAt(parts, P, &Conserved::E, cc) : U_.E[cc];
     if (r < 0.0) mass += cellVolume(c) * r;  // vacuum of negative mass (cut cells), at rest
     if (!(r > 0.0)) continue;
     const double vol = cellVolume(c);

@@ -91,31 +91,15 @@ void Ownership::centredVelocity(const Conserved* parts, int count, double dt, in
   double* vx = midX();
   double* vz = midZ();
   const double *vx0 = vxOld_.data(), *vz0 = vzOld_.data();
-  const auto P = static_cast<std::size_t>(std::max(count, 1));
-  partRho_.resize(P);
-  partMx_.resize(P);
-  partMz_.resize(P);
-  for (std::size_t p = 0; p < P; ++p) {
-    partRho_[p] = parts[p].rho.data();
-    partMx_[p] = parts[p].mx.data();
-    partMz_[p] = parts[p].mz.data();
-  }
-  const double* const* rhoP = partRho_.data();
-  const double* const* mxP = partMx_.data();
-  const double* const* mzP = partMz_.data();
-  const int parts1 = static_cast<int>(P);
   const int* owner = owner_.data();
   const double vmax =
       dt > 0.0 ? std::min(cells_.grid.dx, cells_.grid.dz) / dt : std::numeric_limits<double>::max();
 #pragma omp parallel for schedule(static) num_threads(threads_) if (c1 - c0 >= kParallelStream)
   for (long c = c0; c < c1; ++c) {
-    // The mixture in phase order (one part: its own state, unchanged).
-    double rho = rhoP[0][c], mx = mxP[0][c], mz = mzP[0][c];
-    for (int p = 1; p < parts1; ++p) {
-      rho += rhoP[p][c];
-      mx += mxP[p][c];
-      mz += mzP[p][c];
-    }
+    const auto cc = static_cast<std::size_t>(c);
+    const double rho = mixtureAt(parts, count, &Conserved::rho, cc);
+    const double mx = mixtureAt(parts, count, &Conserved::mx, cc);
+    const double mz = mixtureAt(parts, count, &Conserved::mz, cc);
     if ((!cutCells_ && owner[c] < 0) || !(rho > 0.0)) {
       vx[c] = vz[c] = 0.0;
       continue;

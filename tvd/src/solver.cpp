@@ -275,7 +275,9 @@ void TvdSolver::markOwnCells() {
   }
   const double* rhoStep = rhoStep_.data();
   // A cell is full when its live phases cover it to the fit's round-off (kOwnFilled).
-  if (P == 2) {  // two bodies, the common case: the same sums and values by selects
+  // Two bodies, the common case: the same sums and values by selects (the general loop below,
+  // with branches or with selects, took 2.1-2.3 % of variant 1's conservative run against 1.4 %).
+  if (P == 2) {
     double* a0 = alpha[0];
     double* a1 = alpha[1];
     const double* r0 = rho[0];

@@ -243,8 +243,7 @@ void TvdSolver::strengthStepCut(double dt) {
       q.E[cc] += heat * (q.rho[cc] / Msolid);
     }
   }
-  phases_.mixture(U_);
-  mixtureStale_ = false;
+  mixtureStale_ = true;  // formed when read (syncMixture)
 
   // The domain's edges into the ledger.
   const double twoPi = 2.0 * std::numbers::pi;

@@ -125,7 +125,6 @@ class Ownership {
   void advanceLines(const Conserved* parts, int count, double dt, int rowLo, int rowHi);
   void centredVelocity(const Conserved* parts, int count, double dt, int rowLo, int rowHi);
   void extendIntoVacuum(int layers, int rowLo, int rowHi);
-  std::vector<const double*> partRho_, partMx_, partMz_;  // centredVelocity's phase arrays
   [[nodiscard]] Change fillFor(long cell, int to, const Conserved& U,
                                std::vector<ObjectSum>& sums) const;
   [[nodiscard]] std::vector<ObjectSum> sumObjects(const Conserved& U) const;

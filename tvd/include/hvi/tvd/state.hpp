@@ -10,6 +10,16 @@ struct Conserved {
   std::vector<double> rho, mx, mz, E;
 };
 
+//! Component `part` (&Conserved::rho, ...) of the mixture of `count` phase states at cell c:
+//! their sum in phase order, which is Phases::mixture's value bit for bit (one phase: its own),
+//! for the passes that read the mixture without forming it.
+inline double mixtureAt(const Conserved* parts, int count, std::vector<double> Conserved::*part,
+                        std::size_t c) {
+  double s = (parts[0].*part)[c];
+  for (int p = 1; p < count; ++p) s += (parts[p].*part)[c];
+  return s;
+}
+
 //! Mass (g), momentum (g cm/us) and energy (g cm^2/us^2) that one mechanism added to the domain
 //! (negative: removed). Planar amounts are per cm of depth; r-z amounts include the 2 pi r.
 //! The line kernel books into the same type, per unit line length (Budget::add).
