@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <iterator>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -237,21 +239,30 @@ void Phases::mixture(Conserved& U) const {
 
 namespace {
 
-// The cells (in index order) for which need(c) holds, found by a parallel scan, so that the
-// serial passes of the repair visit only them. Each pass re-checks its condition when it gets to
-// a cell, and no pass can make a cell it did not list need it, so the result is that of a full
-// serial scan. One pass per chunk of cells, compacting without a branch (every cell's index is
+// The cells (in index order) for which needA(c) holds and those for which needB(c) holds, found
+// in one scan (a parallel one for large grids), so that the serial passes of the repair visit
+// only them. One pass per chunk of cells, compacting without a branch (every cell's index is
 // written, the end advanced where it is needed: each chunk's hits stay inside its own part of
-// `found`), then the chunks' hits appended in order.
-template <class Need>
-void findCells(long lo, long hi, std::vector<long>& found, std::vector<long>& out, Need need) {
-  out.clear();
+// `foundA` / `foundB`), then the chunks' hits appended in order.
+// (The scratch holds offsets from lo in 32 bits: no grid that fits in memory has 2^32 cells in
+// its rows, and two such arrays take the room one array of cell indices took.)
+// anyIn(c) says whether a block of kScanBlock cells from c may hold a hit: hits are few (cells
+// along the lines), and a block without one is passed over after a test that compacts nothing.
+constexpr long kScanBlock = 16;
+template <class NeedA, class NeedB, class AnyIn>
+void findCells(long lo, long hi, std::vector<std::uint32_t>& foundA,
+               std::vector<std::uint32_t>& foundB, std::vector<long>& outA,
+               std::vector<long>& outB, NeedA needA, NeedB needB, AnyIn anyIn) {
+  outA.clear();
+  outB.clear();
   if (hi <= lo) return;
   const long n = hi - lo;
-  if (found.size() < static_cast<std::size_t>(n)) found.resize(static_cast<std::size_t>(n));
-  long* f = found.data();
+  for (auto* f : {&foundA, &foundB})
+    if (f->size() < static_cast<std::size_t>(n)) f->resize(static_cast<std::size_t>(n));
+  std::uint32_t* fa = foundA.data();
+  std::uint32_t* fb = foundB.data();
   constexpr int kMaxChunks = 64;
-  long hits[kMaxChunks];
+  long hitsA[kMaxChunks], hitsB[kMaxChunks];
   int chunks = 1;
 #ifdef _OPENMP
   if (n >= kParallelStream) chunks = std::clamp(omp_get_max_threads(), 1, kMaxChunks);
@@ -259,17 +270,41 @@ void findCells(long lo, long hi, std::vector<long>& found, std::vector<long>& ou
 #pragma omp parallel for schedule(static, 1) num_threads(chunks) if (chunks > 1)
   for (int t = 0; t < chunks; ++t) {
     const long b = n * t / chunks, e = n * (t + 1) / chunks;
-    long k = b;
-    for (long i = b; i < e; ++i) {
-      f[k] = lo + i;
-      k += need(lo + i) ? 1 : 0;
+    long ka = b, kb = b;
+    for (long i0 = b; i0 < e; i0 += kScanBlock) {
+      const long i1 = std::min(i0 + kScanBlock, e);
+      if (i1 - i0 == kScanBlock && !anyIn(lo + i0)) continue;
+      for (long i = i0; i < i1; ++i) {
+        fa[ka] = static_cast<std::uint32_t>(i);
+        fb[kb] = static_cast<std::uint32_t>(i);
+        ka += needA(lo + i) ? 1 : 0;
+        kb += needB(lo + i) ? 1 : 0;
+      }
     }
-    hits[t] = k - b;
+    hitsA[t] = ka - b;
+    hitsB[t] = kb - b;
   }
   for (int t = 0; t < chunks; ++t) {
     const long b = n * t / chunks;
-    out.insert(out.end(), f + b, f + b + hits[t]);
+    for (long k = b; k < b + hitsA[t]; ++k) outA.push_back(lo + fa[k]);
+    for (long k = b; k < b + hitsB[t]; ++k) outB.push_back(lo + fb[k]);
   }
+}
+
+// Whether the repair must visit a cell of fraction a and phase density rho: material where the
+// phase is absent (vacated), a fraction without material (fresh), or a part below half the
+// cell (small: pooled with a neighbour).
+inline bool repairNeeds(double a, double rho) {
+  const bool has = rho != 0.0;
+  return (a < kPhaseAbsent && has) | (a >= kPhaseAbsent && (!has | (a < 0.5)));
+}
+
+// The cells of `from` (in index order) for which need(c) holds now.
+template <class Need>
+void keepCells(const std::vector<long>& from, std::vector<long>& out, Need need) {
+  out.clear();
+  for (const long c : from)
+    if (need(c)) out.push_back(c);
 }
 
 }  // namespace
@@ -305,7 +340,28 @@ void Phases::settle(const CellVolumes& volumes, int p) {
   }();
   const double* ap = a.data();
   const double* wp = w.data();
-  findCells(cellLo(), cellHi(), found_, todo_, [&](long c) { return ap[c] - wp[c] > kTiny; });
+  const double* rp = s.rho.data();
+  // One scan for the three passes of the phase's repair: the cells whose working part differs
+  // from the lines' fraction (settle's and route's candidates: both passes only shrink a
+  // mismatch, in cells that have one, so none appears elsewhere), and the cells the repair
+  // needs as they stand (repairNeeds; repair adds the cells settle and route change).
+  findCells(cellLo(), cellHi(), found_, foundB_, band_, seeds_,
+            [&](long c) { return std::abs(ap[c] - wp[c]) > kTiny; },
+            [&](long c) { return repairNeeds(ap[c], rp[c]); },
+            [ap, wp, rp](long c0) {
+              // Both tests without a branch, the flag kept by a select: the loop vectorises
+              // (an integer or'ed from the double compares does not, g++ 12).
+              double any = 0.0;
+              for (long c = c0; c < c0 + kScanBlock; ++c) {
+                const double a = ap[c], r = rp[c];
+                const bool hit = (std::abs(a - wp[c]) > kTiny) | ((a < kPhaseAbsent) & (r != 0.0)) |
+                                 ((a >= kPhaseAbsent) & ((r == 0.0) | (a < 0.5)));
+                any = hit ? 1.0 : any;
+              }
+              return any != 0;
+            });
+  hopped_.clear();
+  keepCells(band_, todo_, [&](long c) { return ap[c] - wp[c] > kTiny; });
   for (const long cell : todo_) {
     const int i = static_cast<int>(cell % nx), k = static_cast<int>(cell / nx);
     const auto c = static_cast<std::size_t>(cell);
@@ -363,8 +419,9 @@ void Phases::route(const CellVolumes& volumes, int p) {
   const double* ap = a.data();
   const double* wp = w.data();
   const double* rp = s.rho.data();
-  // Nothing to do unless the phase has both a deficit and an excess left.
-  findCells(cellLo(), cellHi(), found_, todo_, [&](long c) {
+  // Nothing to do unless the phase has both a deficit and an excess left (among settle's band:
+  // only its cells can still have a mismatch).
+  keepCells(band_, todo_, [&](long c) {
     return std::abs(ap[c] - wp[c]) > kTiny && (ap[c] > wp[c] || (wp[c] > 0.0 && rp[c] > 0.0));
   });
   // Routing rearranges volume, it creates none: it can close the mismatch only where what the
@@ -403,6 +460,8 @@ void Phases::route(const CellVolumes& volumes, int p) {
       }
     w[t] += take / vt;
     w[f] -= take / vf;
+    hopped_.push_back(from);  // for repair: cells whose content changed
+    hopped_.push_back(to);
   };
   const long lo = cellLo(), hi = cellHi();
   const std::vector<long> deficits = [&] {
@@ -486,10 +545,22 @@ long Phases::repair(const CellVolumes& volumes, const OldFractions& oldAlpha) {
     double* comp[4] = {s.rho.data(), s.mx.data(), s.mz.data(), s.E.data()};
     const double* ap = a.data();
     const double* rp = s.rho.data();
-    findCells(cellLo(), cellHi(), found_, todo_, [&](long c) {
-      const bool has = rp[c] != 0.0;
-      return (ap[c] < kPhaseAbsent && has) || (ap[c] >= kPhaseAbsent && (!has || ap[c] < 0.5));
-    });
+    // The cells that need the repair now: among those that did before settle (its scan's
+    // seeds) and those settle and route changed (the band, the hops); the fractions are
+    // unchanged since the scan, and only a change of content can make a cell need it.
+    std::sort(hopped_.begin(), hopped_.end());
+    merged_.clear();
+    std::merge(seeds_.begin(), seeds_.end(), band_.begin(), band_.end(),
+               std::back_inserter(merged_));
+    if (!hopped_.empty()) {
+      std::vector<long>& both = seeds_;  // no longer needed: reused as the merge's output
+      both.clear();
+      std::merge(merged_.begin(), merged_.end(), hopped_.begin(), hopped_.end(),
+                 std::back_inserter(both));
+      merged_.swap(both);
+    }
+    merged_.erase(std::unique(merged_.begin(), merged_.end()), merged_.end());
+    keepCells(merged_, todo_, [&](long c) { return repairNeeds(ap[c], rp[c]); });
     for (const long c : todo_) {
       const int i = static_cast<int>(c % nx), k = static_cast<int>(c / nx);
       const auto cc = static_cast<std::size_t>(c);

@@ -2,6 +2,7 @@
 //! "Conservative interfaces"): every body (phase) keeps its own conserved state in every
 //! cell it occupies, on the part of the cell the marker lines give it.
 #pragma once
+#include <cstdint>
 #include <vector>
 
 #include "hvi/common/snapshot.hpp"
@@ -100,8 +101,10 @@ struct Phases {
   void mixture(Conserved& U) const;
 
  private:
-  std::vector<long> found_;  // repair scratch: cells to visit, compacted per chunk
-  std::vector<long> todo_;
+  // Repair scratch: the scan's offsets, compacted per chunk; the phase's mismatch band, the
+  // repair's seeds, the cells route's hops changed, their merge, the cells a pass visits.
+  std::vector<std::uint32_t> found_, foundB_;
+  std::vector<long> band_, seeds_, hopped_, merged_, todo_;
   std::vector<unsigned> stamp_;  // route scratch: BFS visit stamps and parents per cell
   std::vector<long> parent_, queue_;
   std::vector<int> depth_;
