@@ -271,6 +271,7 @@ class TvdSolver final : public Solver {
   // (-1 where none), from one pass over the fractions in memory order: the line windows
   // without a strided search from both ends of every line.
   std::vector<int> phaseSpan_;
+  std::vector<double> columnSpan_;  // scratch of that pass for the z lines: each column's rows
   // Cut-cell mode: the same for the lines of the step's second sweep, recorded per thread by the
   // first as it writes its lines back (valid while spanNextValid_).
   std::vector<int> spanNext_;
