@@ -118,6 +118,7 @@ class CutLineSolver {
   // so the edge moves into it. Only where no other phase is in the cell (or opens it too): an
   // interface between two phases on a face is the exchange's.
   void openFaces() {
+    bool any = false;
     for (int p = 0; p < P_; ++p) {
       PhaseLine& ph = W_.phase[static_cast<std::size_t>(p)];
       if (!ph.active) continue;
@@ -125,9 +126,13 @@ class CutLineSolver {
         if (ph.present[j]) continue;
         const bool lower = ph.present[j - 1] && j - 1 >= 2 && ph.gm[j - 1] > 0.0;
         const bool upper = ph.present[j + 1] && j + 1 <= n_ + 1 && ph.gp[j] > 0.0;
-        if (lower != upper) ph.virt[j] = lower ? -1 : 1;
+        if (lower != upper) {
+          ph.virt[j] = lower ? -1 : 1;
+          any = true;
+        }
       }
     }
+    if (!any) return;  // (most lines: no interface lies on a face)
     for (int j = 2; j <= n_ + 1; ++j) {
       int claims = 0;
       for (const auto& ph : W_.phase)
