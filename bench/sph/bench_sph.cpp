@@ -9,13 +9,14 @@
 #include <malloc.h>  // mallopt (glibc)
 #endif
 #include <chrono>
-#include <ctime>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
 
+#include "args.hpp"
 #include "hvi/common/units.hpp"
 #include "hvi/sph/sph.hpp"
 #include "hvi/strength/strength.hpp"
@@ -58,7 +59,7 @@ double seconds(std::chrono::steady_clock::time_point a) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
 #ifdef M_MMAP_THRESHOLD
   // glibc raises its mmap threshold to the size of each large block freed (up to 32 MiB); the
   // solvers' large arrays then come from the heap and fragment it as they are rebuilt: +120 B
@@ -68,10 +69,11 @@ int main(int argc, char** argv) {
   mallopt(M_MMAP_THRESHOLD, 256 * 1024);
   mallopt(M_TRIM_THRESHOLD, 64 * 1024 * 1024);
 #endif
-  const double tEnd = argc > 1 ? std::atof(argv[1]) : 5.0;
-  const long maxSteps = argc > 2 ? std::atol(argv[2]) : -1;
-  const double spacing = argc > 3 ? std::atof(argv[3]) : 0.01;
-  const bool strength = argc > 4 && std::atoi(argv[4]) != 0;
+  using hvi::bench::numberArg;
+  const double tEnd = numberArg(argc, argv, 1, "t_end_us", 5.0, 0.0, 1e6);
+  const auto maxSteps = static_cast<long>(numberArg(argc, argv, 2, "max_steps", -1, -1, 1e12));
+  const double spacing = numberArg(argc, argv, 3, "spacing_cm", 0.01, 1e-4, 1.0);
+  const bool strength = numberArg(argc, argv, 4, "strength", 0, 0, 1) != 0.0;
   int threads = 1;
 #ifdef _OPENMP
   threads = omp_get_max_threads();
@@ -79,10 +81,11 @@ int main(int argc, char** argv) {
   const auto t0 = std::chrono::steady_clock::now();
   hvi::sph::SphSolver solver(variant2(spacing, strength));
   const double setup = seconds(t0);
-  std::printf("variant 2: %ld particles (mass iteration: %d iterations, %zu deleted), setup "
-              "%.2f s, %d threads\n",
-              solver.workItems(), solver.massAdjustment().iterations,
-              solver.massAdjustment().deleted, setup, threads);
+  std::printf(
+      "variant 2: %ld particles (mass iteration: %d iterations, %zu deleted), setup "
+      "%.2f s, %d threads\n",
+      solver.workItems(), solver.massAdjustment().iterations, solver.massAdjustment().deleted,
+      setup, threads);
   const hvi::Totals e0 = solver.totals();
   const auto t1 = std::chrono::steady_clock::now();
   const std::clock_t c1 = std::clock();
@@ -105,4 +108,16 @@ int main(int argc, char** argv) {
   std::printf("energy drift %.3e of the total, mass drift %.3e\n",
               (e1.energy() - e0.energy()) / e0.energy(), (e1.mass - e0.mass) / e0.mass);
   return 0;
+}
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr,
+                 "hvi_bench_sph: %s\n(usage: hvi_bench_sph [t_end_us] [max_steps] [spacing_cm] "
+                 "[strength 0|1])\n",
+                 e.what());
+    return 2;
+  }
 }

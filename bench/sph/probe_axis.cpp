@@ -16,10 +16,11 @@
 #include <numbers>
 #include <string>
 
+#include "args.hpp"
+#include "detail/axis_correction.hpp"
 #include "hvi/cases/load.hpp"
 #include "hvi/sph/kernel.hpp"
 #include "hvi/sph/sph.hpp"
-#include "detail/axis_correction.hpp"
 
 using namespace hvi;
 
@@ -29,11 +30,12 @@ struct Acc {
   double hoopPi = 0;                         // sum_j nu_j Pi_ij W_ij (the viscous hoop's sum)
 };
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
+  using hvi::bench::numberArg;
   const std::string path = argc > 1 ? argv[1] : "cases/scenes/variant1_sph_coarse.toml";
-  const long nsteps = argc > 2 ? std::atol(argv[2]) : 160;
-  const double rmax = argc > 3 ? std::atof(argv[3]) : 0.03;
-  const long trace = argc > 4 ? std::atol(argv[4]) : -1;
+  const auto nsteps = static_cast<long>(numberArg(argc, argv, 2, "NSTEPS", 160, -1, 1e12));
+  const double rmax = numberArg(argc, argv, 3, "RMAX", 0.03, 0.0, 1e6);
+  const auto trace = static_cast<long>(numberArg(argc, argv, 4, "ID", -1, -1, 1e12));
   const cases::Scene scene = cases::loadScene(path);
   sph::SphSolver solver(scene);
   const double alpha = scene.sph.alpha, beta = scene.sph.beta;
@@ -68,9 +70,10 @@ int main(int argc, char** argv) {
     for (const auto& [id, r] : rec)
       if (r.best > rmax) {
         ++count;
-        std::printf("id %6ld body %d from (%.4f, %.4f): -vz max %.4f at t %.3f (%.4f, %.4f), "
-                    "compressed max %.4f, P peak %.4f\n",
-                    id, r.obj, r.r0, r.z0, r.best, r.tBest, r.rBest, r.zBest, r.shocked, r.pPeak);
+        std::printf(
+            "id %6ld body %d from (%.4f, %.4f): -vz max %.4f at t %.3f (%.4f, %.4f), "
+            "compressed max %.4f, P peak %.4f\n",
+            id, r.obj, r.r0, r.z0, r.best, r.tBest, r.rBest, r.zBest, r.shocked, r.pPeak);
       }
     std::printf("%d particles faster than %.4f cm/us along -z, %ld steps\n", count, rmax,
                 solver.step());
@@ -89,8 +92,12 @@ int main(int argc, char** argv) {
           best = -p.vz[i], bt = solver.time(), bx = p.x[i], bz = p.z[i], bo = p.object[i],
           bid = p.id[i];
     }
-    std::printf("%s rz_form %s: fastest along -z %.4f cm/us (id %ld body %d at r = %.4f, z = %.3f, t = %.3f us), %ld steps\n",
-                path.c_str(), sph::stepperConfig(scene).rzForm == cases::RzForm::Symmetric ? "symmetric" : "ring", best, bid, bo, bx, bz, bt, solver.step());
+    std::printf(
+        "%s rz_form %s: fastest along -z %.4f cm/us (id %ld body %d at r = %.4f, z = %.3f, t = "
+        "%.3f us), %ld steps\n",
+        path.c_str(),
+        sph::stepperConfig(scene).rzForm == cases::RzForm::Symmetric ? "symmetric" : "ring", best,
+        bid, bo, bx, bz, bt, solver.step());
     return 0;
   }
   std::map<long, Acc> acc;  // by id: integrated dv_z
@@ -105,7 +112,8 @@ int main(int argc, char** argv) {
     const std::size_t n = p.size();
     for (std::size_t i = 0; i < n; ++i) {
       if (p.x[i] > rmax || (trace >= 0 && p.id[i] != trace)) continue;
-      const double ri = sym ? ring.value(p.x[i], p.h[i]) : p.x[i], Ai = p.p[i] / (p.rho[i] * p.rho[i]);
+      const double ri = sym ? ring.value(p.x[i], p.h[i]) : p.x[i],
+                   Ai = p.p[i] / (p.rho[i] * p.rho[i]);
       const double qi = sym ? Ai : ri * Ai;
       Acc a;
       for (std::size_t j = 0; j < n; ++j)
@@ -158,12 +166,16 @@ int main(int argc, char** argv) {
       for (std::size_t i = 0; i < q.size(); ++i)
         if (q.id[i] == trace) {
           const Acc& a = now[trace];
-          std::printf("step %3ld t %.4f r %.4f z %.4f vz %+.4f rho %.3f P %+.4f | dvz/dt %+8.3f  a_n: self %+8.3f nb %+8.3f visc %+8.3f sum %+8.3f | planar nb %+8.3f\n",
-                      s, solver.time(), q.x[i], q.z[i], q.vz[i], q.rho[i], q.p[i], (q.vz[i] - vzBefore) / dt,
-                      a.self, a.nb, a.visc, a.self + a.nb + a.visc, a.nbPlanar);
-          std::printf("         vr %+.4f | dvr/dt %+8.3f  a_r: pair %+8.3f visc %+8.3f hoop %+8.3f sum %+8.3f\n",
-                      q.vx[i], (q.vx[i] - vxBefore) / dt, a.rPair, a.rVisc, a.hoopSum,
-                      a.rPair + a.rVisc + a.hoopSum);
+          std::printf(
+              "step %3ld t %.4f r %.4f z %.4f vz %+.4f rho %.3f P %+.4f | dvz/dt %+8.3f  a_n: self "
+              "%+8.3f nb %+8.3f visc %+8.3f sum %+8.3f | planar nb %+8.3f\n",
+              s, solver.time(), q.x[i], q.z[i], q.vz[i], q.rho[i], q.p[i],
+              (q.vz[i] - vzBefore) / dt, a.self, a.nb, a.visc, a.self + a.nb + a.visc, a.nbPlanar);
+          std::printf(
+              "         vr %+.4f | dvr/dt %+8.3f  a_r: pair %+8.3f visc %+8.3f hoop %+8.3f sum "
+              "%+8.3f\n",
+              q.vx[i], (q.vx[i] - vxBefore) / dt, a.rPair, a.rVisc, a.hoopSum,
+              a.rPair + a.rVisc + a.hoopSum);
         }
     }
     for (auto& [id, a] : now) {
@@ -184,14 +196,26 @@ int main(int argc, char** argv) {
   for (auto& [vz, i] : order) {
     if (shown++ >= 12) break;
     const auto it = acc.find(p.id[i]);
-    std::printf("id %6ld obj %d r = %.4f z = %.4f vz = %.4f vr = %.4f rho = %.3f P = %.4f", (long)p.id[i],
-                p.object[i], p.x[i], p.z[i], p.vz[i], p.vx[i], p.rho[i], p.p[i]);
+    std::printf("id %6ld obj %d r = %.4f z = %.4f vz = %.4f vr = %.4f rho = %.3f P = %.4f",
+                (long)p.id[i], p.object[i], p.x[i], p.z[i], p.vz[i], p.vx[i], p.rho[i], p.p[i]);
     if (it != acc.end()) {
       const Acc& a = it->second;
-      std::printf("  int dv_z: self %+.4f nb %+.4f visc %+.4f sum %+.4f | planar self %+.4f nb %+.4f",
-                  a.self, a.nb, a.visc, a.self + a.nb + a.visc, a.selfPlanar, a.nbPlanar);
+      std::printf(
+          "  int dv_z: self %+.4f nb %+.4f visc %+.4f sum %+.4f | planar self %+.4f nb %+.4f",
+          a.self, a.nb, a.visc, a.self + a.nb + a.visc, a.selfPlanar, a.nbPlanar);
     }
     std::printf("\n");
   }
   return 0;
+}
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr,
+                 "hvi_probe_axis: %s\n(usage: hvi_probe_axis [SCENE] [NSTEPS] [RMAX] [ID])\n",
+                 e.what());
+    return 2;
+  }
 }
