@@ -251,8 +251,8 @@ namespace {
 constexpr long kScanBlock = 16;
 template <class NeedA, class NeedB, class AnyIn>
 void findCells(long lo, long hi, std::vector<std::uint32_t>& foundA,
-               std::vector<std::uint32_t>& foundB, std::vector<long>& outA,
-               std::vector<long>& outB, NeedA needA, NeedB needB, AnyIn anyIn) {
+               std::vector<std::uint32_t>& foundB, std::vector<long>& outA, std::vector<long>& outB,
+               NeedA needA, NeedB needB, AnyIn anyIn) {
   outA.clear();
   outB.clear();
   if (hi <= lo) return;
@@ -345,21 +345,22 @@ void Phases::settle(const CellVolumes& volumes, int p) {
   // from the lines' fraction (settle's and route's candidates: both passes only shrink a
   // mismatch, in cells that have one, so none appears elsewhere), and the cells the repair
   // needs as they stand (repairNeeds; repair adds the cells settle and route change).
-  findCells(cellLo(), cellHi(), found_, foundB_, band_, seeds_,
-            [&](long c) { return std::abs(ap[c] - wp[c]) > kTiny; },
-            [&](long c) { return repairNeeds(ap[c], rp[c]); },
-            [ap, wp, rp](long c0) {
-              // Both tests without a branch, the flag kept by a select: the loop vectorises
-              // (an integer or'ed from the double compares does not, g++ 12).
-              double any = 0.0;
-              for (long c = c0; c < c0 + kScanBlock; ++c) {
-                const double a = ap[c], r = rp[c];
-                const bool hit = (std::abs(a - wp[c]) > kTiny) | ((a < kPhaseAbsent) & (r != 0.0)) |
-                                 ((a >= kPhaseAbsent) & ((r == 0.0) | (a < 0.5)));
-                any = hit ? 1.0 : any;
-              }
-              return any != 0;
-            });
+  findCells(
+      cellLo(), cellHi(), found_, foundB_, band_, seeds_,
+      [&](long c) { return std::abs(ap[c] - wp[c]) > kTiny; },
+      [&](long c) { return repairNeeds(ap[c], rp[c]); },
+      [ap, wp, rp](long c0) {
+        // Both tests without a branch, the flag kept by a select: the loop vectorises
+        // (an integer or'ed from the double compares does not, g++ 12).
+        double any = 0.0;
+        for (long c = c0; c < c0 + kScanBlock; ++c) {
+          const double a = ap[c], r = rp[c];
+          const bool hit = (std::abs(a - wp[c]) > kTiny) | ((a < kPhaseAbsent) & (r != 0.0)) |
+                           ((a >= kPhaseAbsent) & ((r == 0.0) | (a < 0.5)));
+          any = hit ? 1.0 : any;
+        }
+        return any != 0;
+      });
   hopped_.clear();
   keepCells(band_, todo_, [&](long c) { return ap[c] - wp[c] > kTiny; });
   for (const long cell : todo_) {

@@ -164,12 +164,12 @@ TEST(TvdCutCells, TwoMaterialContactSlips) {
 // tension cut-off rectified it, and the state error reached 0.155.
 struct CarriedDisk {
   long steps = 0;
-  double mass = 0.0;      // relative change of the phase's mass
-  double area = 0.0;      // relative change of the lines' area
-  double end = 0.0;       // state error, every cell of the disk, at the end
-  double transient = 0.0; // the largest state error of any cell of the disk at any step
-  double outside = 0.0;   // the largest fraction in a cell whose centre lies beyond R + h
-  double inside = 0.0;    // the largest 1 - fraction in a cell whose centre lies within R - h
+  double mass = 0.0;       // relative change of the phase's mass
+  double area = 0.0;       // relative change of the lines' area
+  double end = 0.0;        // state error, every cell of the disk, at the end
+  double transient = 0.0;  // the largest state error of any cell of the disk at any step
+  double outside = 0.0;    // the largest fraction in a cell whose centre lies beyond R + h
+  double inside = 0.0;     // the largest 1 - fraction in a cell whose centre lies within R - h
 };
 
 CarriedDisk carryDisk(bool tensionCutoff) {
