@@ -161,26 +161,26 @@ void TvdSolver::limitThinVelocities(double dt) {
     // vectorises), the same test as the one per cell below.
     const double* ap = alpha.data();
     const double* mp = q.rho.data();
-    for (long c = c0; c < c1; ++c) {
-      if ((c - c0) % kThinBlock == 0 && c + kThinBlock <= c1 && !anyThin(ap + c, mp + c, rhoStep)) {
-        c += kThinBlock - 1;
-        continue;
+    for (long b0 = c0; b0 < c1; b0 += kThinBlock) {
+      const long b1 = std::min(b0 + kThinBlock, c1);
+      if (b1 - b0 == kThinBlock && !anyThin(ap + b0, mp + b0, rhoStep)) continue;
+      for (long c = b0; c < b1; ++c) {
+        const auto cc = static_cast<std::size_t>(c);
+        const double a = alpha[cc], m = q.rho[cc];
+        if (!isThin(a, m, rhoStep)) continue;
+        const double ux = q.mx[cc] / m, uz = q.mz[cc] / m;
+        if (std::abs(ux) <= vmax && std::abs(uz) <= vmax) continue;
+        const double vx = std::clamp(ux, -vmax, vmax), vz = std::clamp(uz, -vmax, vmax);
+        const double dmx = m * (vx - ux), dmz = m * (vz - uz);
+        const double dE = 0.5 * m * ((vx * vx + vz * vz) - (ux * ux + uz * uz));
+        q.mx[cc] += dmx;
+        q.mz[cc] += dmz;
+        q.E[cc] += dE;
+        const double vol = cellVolumes_(c);
+        ledger_.floors.momentumX += dmx * vol;
+        ledger_.floors.momentumZ += dmz * vol;
+        ledger_.floors.energy += dE * vol;
       }
-      const auto cc = static_cast<std::size_t>(c);
-      const double a = alpha[cc], m = q.rho[cc];
-      if (!isThin(a, m, rhoStep)) continue;
-      const double ux = q.mx[cc] / m, uz = q.mz[cc] / m;
-      if (std::abs(ux) <= vmax && std::abs(uz) <= vmax) continue;
-      const double vx = std::clamp(ux, -vmax, vmax), vz = std::clamp(uz, -vmax, vmax);
-      const double dmx = m * (vx - ux), dmz = m * (vz - uz);
-      const double dE = 0.5 * m * ((vx * vx + vz * vz) - (ux * ux + uz * uz));
-      q.mx[cc] += dmx;
-      q.mz[cc] += dmz;
-      q.E[cc] += dE;
-      const double vol = cellVolumes_(c);
-      ledger_.floors.momentumX += dmx * vol;
-      ledger_.floors.momentumZ += dmz * vol;
-      ledger_.floors.energy += dE * vol;
     }
   }
 }

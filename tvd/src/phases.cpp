@@ -92,17 +92,15 @@ void Phases::coverOccupied() {
 
 namespace {
 
-// Where the phases together exceed 1 (a cell, or a face side, where two bodies' lines overlap by
-// round-off), each is scaled down to fit: from[p] -> to[p] over [lo, hi), below `absent` set to
-// 0 (absent < 0: no threshold). One pass; the sum in phase order, as the scaling always took it.
-void fitTogether(const double* const* from, double* const* to, int P, long lo, long hi,
-                 double absent) {
+// Where the phases together exceed 1 (a cell where two bodies' lines overlap by round-off),
+// each is scaled down to fit, in place over cells [lo, hi), and a fraction below kPhaseAbsent is
+// set to 0. One pass; the sum in phase order, as the scaling always took it. (The faces are
+// fitted in Phases::measure, only where two bodies' wet spans overlap.)
+void fitTogether(double* const* alpha, int P, long lo, long hi) {
   constexpr int kMax = 16;
   if (P == 2) {  // one phase per body: two bodies is the common case (a striker and a target)
-    const double* f0 = from[0];
-    const double* f1 = from[1];
-    double* t0 = to[0];
-    double* t1 = to[1];
+    double* f0 = alpha[0];
+    double* f1 = alpha[1];
 #pragma omp parallel for schedule(static) if (hi - lo >= kParallelStream)
     for (long i = lo; i < hi; ++i) {
       // x / 1 is x exactly: the division by a select keeps the loop free of branches (it
@@ -110,8 +108,8 @@ void fitTogether(const double* const* from, double* const* to, int P, long lo, l
       const double total = 0.0 + f0[i] + f1[i];
       const double scale = total > 1.0 ? total : 1.0;
       const double a0 = f0[i] / scale, a1 = f1[i] / scale;
-      t0[i] = a0 < absent ? 0.0 : a0;
-      t1[i] = a1 < absent ? 0.0 : a1;
+      f0[i] = a0 < kPhaseAbsent ? 0.0 : a0;
+      f1[i] = a1 < kPhaseAbsent ? 0.0 : a1;
     }
     return;
   }
@@ -119,11 +117,11 @@ void fitTogether(const double* const* from, double* const* to, int P, long lo, l
 #pragma omp parallel for schedule(static) if (hi - lo >= kParallelStream)
     for (long i = lo; i < hi; ++i) {
       double total = 0.0;
-      for (int p = 0; p < P; ++p) total += from[p][i];
+      for (int p = 0; p < P; ++p) total += alpha[p][i];
       for (int p = 0; p < P; ++p) {
-        double a = from[p][i];
+        double a = alpha[p][i];
         if (P > 1 && total > 1.0) a /= total;
-        to[p][i] = a < absent ? 0.0 : a;
+        alpha[p][i] = a < kPhaseAbsent ? 0.0 : a;
       }
     }
     return;
@@ -133,13 +131,13 @@ void fitTogether(const double* const* from, double* const* to, int P, long lo, l
     double v[kMax];
     double total = 0.0;
     for (int p = 0; p < P; ++p) {
-      v[p] = from[p][i];
+      v[p] = alpha[p][i];
       total += v[p];
     }
     for (int p = 0; p < P; ++p) {
       double a = v[p];
       if (total > 1.0) a /= total;
-      to[p][i] = a < absent ? 0.0 : a;
+      alpha[p][i] = a < kPhaseAbsent ? 0.0 : a;
     }
   }
 }
@@ -153,7 +151,7 @@ void Phases::measure(const MarkerSet& markers) {
   std::vector<double*> to(static_cast<std::size_t>(count));
   for (int p = 0; p < count; ++p)  // phase p is body (object) p; fitted in place
     to[static_cast<std::size_t>(p)] = alpha[static_cast<std::size_t>(p)].data();
-  fitTogether(to.data(), to.data(), count, cellLo(), cellHi(), kPhaseAbsent);
+  fitTogether(to.data(), count, cellLo(), cellHi());
   markers.faceApertures(grid, faces);
   if (count < 2) return;
   // The bodies' apertures can sum to more than 1 only on faces that two of them wet: on each

@@ -230,26 +230,17 @@ void TvdSolver::sweepCut(int direction, double dt) {
         const double* alpha = phases_.alpha[static_cast<std::size_t>(p)].data();
         const double* volume =
             (volumeFresh_ ? phases_.alpha : phases_.volume)[static_cast<std::size_t>(p)].data();
-        // The buffer's cells inside the domain, [jIn, jOut), read without the ghost mapping
-        // (z lines: every load a row apart, the mapping's branches per load cost as much); the
-        // ghosts beyond the domain's sides through it.
-        const int jIn = std::max(0, 2 - a), jOut = std::min(n + 4, N + 2 - a);
-        auto load = [&](int j, int pos, bool ghost) {
+        for (int j = 0; j < n + 4; ++j) {
+          bool mirrored = false;
+          const int pos = detail::ghostSource(a - 2 + j, N, lowSide, highSide, mirrored);
+          const bool ghost = pos != a - 2 + j;  // beyond the domain: the kernel fills its state
           const long c = at(pos);
           ph.alpha[j] = alpha[c] >= kPhaseAbsent ? alpha[c] : 0.0;
           ph.vol0[j] = ph.alpha[j] > 0.0 ? volume[c] : 0.0;
           if (!ghost)
             for (int k = 0; k < 4; ++k) ph.q0[k][j] = arrays[k][c];
           ph.It[j] = cross[0][pos * crossStride] - cross[1][pos * crossStride];
-        };
-        for (int j = 0; j < n + 4; ++j) {
-          if (j == jIn) j = std::max(jOut, jIn);
-          if (j >= n + 4) break;
-          bool mirrored = false;
-          const int pos = detail::ghostSource(a - 2 + j, N, lowSide, highSide, mirrored);
-          load(j, pos, pos != a - 2 + j);  // beyond the domain: the kernel fills its state
         }
-        for (int j = jIn; j < jOut; ++j) load(j, a - 2 + j, false);
         // Effect fracture: the solid phase's damage at the sweep's start (rho_p D / rho_p), the
         // ghosts' from their source cells as their states.
         if (fracture && strength_->phases[static_cast<std::size_t>(p)].solid) {
