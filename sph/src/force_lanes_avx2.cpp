@@ -12,12 +12,14 @@ RowKernel rowKernelAvx2(bool rz, bool viscous, bool cached, bool compatible, boo
   return lanes_avx2::pick(rz, viscous, cached, compatible, half);
 }
 ScanKernel scanKernelAvx2() { return &lanes_avx2::scan; }
+DistanceWKernel distanceWKernelAvx2() { return &lanes_avx2::distanceW; }
 RowWKernel rowWKernelAvx2() { return lanes_avx2::rowWKernel(); }
 }  // namespace hvi::sph::detail
 #else
 namespace hvi::sph::detail {
 RowKernel rowKernelAvx2(bool, bool, bool, bool, bool) { return nullptr; }
 ScanKernel scanKernelAvx2() { return nullptr; }
+DistanceWKernel distanceWKernelAvx2() { return nullptr; }
 RowWKernel rowWKernelAvx2() { return nullptr; }
 }  // namespace hvi::sph::detail
 #endif

@@ -12,12 +12,14 @@ RowKernel rowKernelAvx512(bool rz, bool viscous, bool cached, bool compatible, b
   return lanes_avx512::pick(rz, viscous, cached, compatible, half);
 }
 ScanKernel scanKernelAvx512() { return &lanes_avx512::scan; }
+DistanceWKernel distanceWKernelAvx512() { return &lanes_avx512::distanceW; }
 RowWKernel rowWKernelAvx512() { return lanes_avx512::rowWKernel(); }
 }  // namespace hvi::sph::detail
 #else
 namespace hvi::sph::detail {
 RowKernel rowKernelAvx512(bool, bool, bool, bool, bool) { return nullptr; }
 ScanKernel scanKernelAvx512() { return nullptr; }
+DistanceWKernel distanceWKernelAvx512() { return nullptr; }
 RowWKernel rowWKernelAvx512() { return nullptr; }
 }  // namespace hvi::sph::detail
 #endif

@@ -8,5 +8,6 @@ RowKernel rowKernelBaseline(bool rz, bool viscous, bool cached, bool compatible,
   return lanes_baseline::pick(rz, viscous, cached, compatible, half);
 }
 ScanKernel scanKernelBaseline() { return &lanes_baseline::scan; }
+DistanceWKernel distanceWKernelBaseline() { return &lanes_baseline::distanceW; }
 RowWKernel rowWKernelBaseline() { return lanes_baseline::rowWKernel(); }
 }  // namespace hvi::sph::detail

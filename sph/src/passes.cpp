@@ -476,6 +476,16 @@ ScanKernel scanKernel() {
   return k;
 }
 
+DistanceWKernel distanceWKernel() {
+  static const DistanceWKernel k = [] {
+    DistanceWKernel d = nullptr;
+    if (laneWidth() >= 8) d = distanceWKernelAvx512();
+    if (!d && laneWidth() >= 4) d = distanceWKernelAvx2();
+    return d ? d : distanceWKernelBaseline();
+  }();
+  return k;
+}
+
 ForcePass selectScalarForcePass(cases::Kernel kernel, bool rz, bool viscous, bool compatible,
                                 bool cached) {
   const auto sel = [&](auto k) -> ForcePass {

@@ -52,12 +52,19 @@ using RowKernel = void (*)(const LaneArrays& a, std::size_t i, const int* nb, co
 //! The list build's scan of the grid's sorted positions [s0, s1) around (xi, zi, hi): each
 //! position s is written at slot[min(cnt, last)] and cnt advances if |x - x_s| < sqrt(rf2) h_is
 //! (h_is = (hi + sh[s]) / 2, compared as rf2 h_is^2) and order[s] != self; with `w` (not null)
-//! its Gaussian W_is goes to w[min(cnt, last)]. Returns cnt. The same slots, values and count as
-//! that loop written one position at a time (the distances in lanes).
+//! with `r2` (not null) its squared distance and h_is go to r2[min(cnt, last)] and
+//! hs[min(cnt, last)]. Returns cnt. The same slots, values and count as that loop written one
+//! position at a time (the distances in lanes).
 using ScanKernel = int (*)(const double* sx, const double* sz, const double* sh, const int* order,
                            int s0, int s1, double xi, double zi, double hi, double rf2, int self,
-                           int* slot, double* w, int cnt, int last);
+                           int* slot, double* r2, double* hs, int cnt, int last);
 ScanKernel scanKernel();  //!< AVX-512 where the CPU has it, else baseline
+
+//! The Gaussian W of a scanned row's cnt kept pairs, in place: w holds their squared distances
+//! (the scan's r2) and becomes W(r2, h_ij) with hs the scan's h_ij; nothing past cnt is written.
+//! The bits of GaussianKernel::value (kernel.hpp) for every lane width.
+using DistanceWKernel = void (*)(double* w, const double* hs, int cnt, double hi);
+DistanceWKernel distanceWKernel();  //!< the scan's lane width
 
 //! The Gaussian W_ij of row i's cnt neighbours nb into w (which has room for a lane width past
 //! cnt), as the scan computed them: the same bits (the mass iteration recomputes them per
@@ -80,6 +87,9 @@ RowKernel rowKernelAvx2(bool rz, bool viscous, bool cached, bool compatible, boo
 ScanKernel scanKernelBaseline();
 ScanKernel scanKernelAvx512();  //!< null without compiler support
 ScanKernel scanKernelAvx2();    //!< null without compiler support
+DistanceWKernel distanceWKernelBaseline();
+DistanceWKernel distanceWKernelAvx512();  //!< null without compiler support
+DistanceWKernel distanceWKernelAvx2();    //!< null without compiler support
 //! The widest of rowKernelAvx512, rowKernelAvx2 and rowKernelBaseline the CPU has (laneWidth),
 //! full rows.
 RowKernel rowKernel(bool rz, bool viscous, bool cached, bool compatible);

@@ -158,11 +158,12 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
   (void)mui;
 }
 
-// The Gaussian W of lanes at squared distance r2 and pair length hij (kernel.hpp's
-// GaussianKernel::value with ih2 = 1 / hij^2: the same bits).
-inline D gaussianW(D r2, D hij) {
+// The Gaussian W of lanes at squared distance r2 and pair length h_ij (kernel.hpp's
+// GaussianKernel::value: the same bits). ih2i = 1 / h_i^2 stands for 1 / h_ij^2 in a block
+// whose pairs all have h_ij = h_i ((h_i + h_i) / 2 = h_i exactly): no division there.
+inline D gaussianW(D r2, D hij, D hi, D ih2i) {
   using GK = GaussianKernel;
-  const D ih2 = 1.0 / (hij * hij);
+  const D ih2 = anyLane(hij != hi) ? 1.0 / (hij * hij) : ih2i;
   const D q2 = r2 * ih2;
   const D wv =
       (expNegative(select(q2 < 9.0, q2, splat(9.0))) - GK::tail * (10.0 - q2)) * GK::norm * ih2;
@@ -170,8 +171,8 @@ inline D gaussianW(D r2, D hij) {
 }
 
 int scan(const double* sx, const double* sz, const double* sh, const int* order, int s0, int s1,
-         double xi, double zi, double hi, double rf2, int self, int* slot, double* w, int cnt,
-         int last) {
+         double xi, double zi, double hi, double rf2, int self, int* slot, double* r2o,
+         double* ho, int cnt, int last) {
   int s = s0;
   for (; s < s1; s += L) {
     // The block's lanes past s1 repeat its last position and are never kept.
@@ -194,8 +195,6 @@ int scan(const double* sx, const double* sz, const double* sh, const int* order,
     const D r2 = dx * dx + dz * dz;
     const D hij = 0.5 * (hi + ph);
     const I near = (r2 < rf2 * hij * hij) & valid;
-    D wv{};
-    if (w) wv = gaussianW(r2, hij);
 #if HVI_LANES == 8 && defined(__AVX512F__)
     if (cnt + L <= last + 1 && s + L <= s1) {
       // The kept positions (and their W) packed to the front of a register, stored at the
@@ -208,7 +207,10 @@ int scan(const double* sx, const double* sz, const double* sh, const int* order,
                                            _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
       _mm256_storeu_si256(reinterpret_cast<__m256i*>(slot + cnt),
                           _mm256_maskz_compress_epi32(keep, pos));
-      if (w) _mm512_storeu_pd(w + cnt, _mm512_maskz_compress_pd(keep, (__m512d)wv));
+      if (r2o) {
+        _mm512_storeu_pd(r2o + cnt, _mm512_maskz_compress_pd(keep, (__m512d)r2));
+        _mm512_storeu_pd(ho + cnt, _mm512_maskz_compress_pd(keep, (__m512d)hij));
+      }
       cnt += __builtin_popcount(keep);
       continue;
     }
@@ -216,11 +218,41 @@ int scan(const double* sx, const double* sz, const double* sh, const int* order,
     for (int l = 0; l < L && s + l < s1; ++l) {
       const int at = cnt < last ? cnt : last;
       slot[at] = s + l;
-      if (w) w[at] = wv[l];
+      if (r2o) {
+        r2o[at] = r2[l];
+        ho[at] = hij[l];
+      }
       cnt += static_cast<int>(near[l] != 0) & static_cast<int>(order[s + l] != self);
     }
   }
   return cnt;
+}
+
+// W of the scan's kept pairs, in place: w[k] = gaussianW(w[k], hs[k]) for k < cnt, so the W of
+// the pairs a row keeps and not of every candidate its cells hold. The last block's lanes past
+// cnt are computed from the row's first pair and not stored (the slots there may be another
+// row's).
+void distanceW(double* w, const double* hs, int cnt, double hi) {
+  const D hiv = splat(hi), ih2i = splat(1.0 / (hi * hi));
+  for (int k = 0; k < cnt; k += L) {
+    D r2, hij;
+    const bool whole = k + L <= cnt;
+    if (whole) {
+      r2 = load(w + k);
+      hij = load(hs + k);
+    } else {
+      for (int l = 0; l < L; ++l) {
+        const int t = k + l < cnt ? k + l : 0;
+        r2[l] = w[t];
+        hij[l] = hs[t];
+      }
+    }
+    const D out = gaussianW(r2, hij, hiv, ih2i);
+    if (whole)
+      store(w + k, out);
+    else
+      for (int l = 0; k + l < cnt; ++l) w[k + l] = out[l];
+  }
 }
 
 template <bool RZ, bool Viscous, bool Cached, bool Half>
@@ -243,13 +275,14 @@ RowKernel pick1(bool viscous, bool cached, bool compatible) {
 void rowW(const double* x, const double* z, const double* h, std::size_t i, const int* nb,
           int cnt, double* w) {
   const double xi = x[i], zi = z[i], hi = h[i];
+  const D hiv = splat(hi), ih2i = splat(1.0 / (hi * hi));
   for (int k = 0; k < cnt; k += L) {
     int idx[L];
     for (int l = 0; l < L; ++l) idx[l] = nb[k + l < cnt ? k + l : cnt - 1];
     const D dx = xi - gather(x, idx), dz = zi - gather(z, idx);
     const D r2 = dx * dx + dz * dz;
     const D hij = 0.5 * (hi + gather(h, idx));
-    store(w + k, gaussianW(r2, hij));
+    store(w + k, gaussianW(r2, hij, hiv, ih2i));
   }
 }
 

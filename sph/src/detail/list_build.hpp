@@ -96,12 +96,15 @@ void buildList(const double* x, const double* z, const double* h, const double* 
     const long nr = static_cast<long>(nReal);
     const double rf2 = radiusFactor * radiusFactor;
     const ScanKernel scan = scanKernel();
+    const DistanceWKernel distanceW = distanceWKernel();
     // 2 lanes (no AVX2) measured slower than the one-candidate-at-a-time loop with its branch
     // (docs/performance.md): that loop, then; the same pairs, W and densities.
     const bool lanes = laneWidth() >= 4;
 #pragma omp parallel if (nr > kParallelPairs)
   {
     std::vector<double> scratch(cacheW || !needW ? 0 : half ? list.scanStride : stride);
+    // The Gaussian's h_ij of the kept pairs, beside their r2 (in the W row) until distanceW.
+    std::vector<double> hScratch(kGauss && needW ? (half ? list.scanStride : stride) : 0);
     std::vector<int> fullRow(half ? list.scanStride : 0);
 #pragma omp for schedule(static) reduction(max : overflow, fullNeed)
     for (long il = 0; il < nr; ++il) {
@@ -157,7 +160,8 @@ void buildList(const double* x, const double* z, const double* h, const double* 
         continue;
       }
       int* slot = rowOut;
-      double* wr = cacheW ? wc + base : scratch.data();  // the Gaussian's W come with the scan
+      // The Gaussian's kept r2 come with the scan, in the W row, and become W below.
+      double* wr = cacheW ? wc + base : scratch.data();
       const int last = room - 1;
       // Pass 1, without a branch on the distance: every candidate's sorted position is written
       // at the row's end and kept (the end advances) if it is within radiusFactor * h_ij. So a
@@ -169,7 +173,7 @@ void buildList(const double* x, const double* z, const double* h, const double* 
         const int s1 = grid.begin(row * nx + std::min(cx + kReach, nx - 1) + 1);
         // h_ij = h_i bit for bit when h_j = h_i (then the radius is radiusFactor h_i).
         cnt = scan(sx, sz, sh, order, s0, s1, xi, zi, hi, rf2, static_cast<int>(i), slot,
-                   kGauss && needW ? wr : nullptr, cnt, last);
+                   kGauss && needW ? wr : nullptr, hScratch.data(), cnt, last);
       }
       count[i] = cnt;
       if (cnt > last) {  // no spare slot: redone with a wider row
@@ -179,8 +183,10 @@ void buildList(const double* x, const double* z, const double* h, const double* 
           overflow = 1;
         continue;
       }
-      // Pass 2: W_ij of the kept pairs (the Gaussian's came with the scan), then the sorted
-      // positions become point indices and the density adds up in the order the pairs were found.
+      // Pass 2: W_ij of the kept pairs (computed for them only: about half the candidates of
+      // the 5 x 5 cells are kept), then the sorted positions become point indices and the
+      // density adds up in the order the pairs were found.
+      if (kGauss && needW) distanceW(wr, hScratch.data(), cnt, hi);
       if (!kGauss && needW) {
         for (int k = 0; k < cnt; ++k) {
           const int s = slot[k];

@@ -289,7 +289,7 @@ TEST(ForceLanes, HalfRowKernelsGiveBothEndsBitForBit) {
 // The list build's scan (force_lanes.hpp, ScanKernel) against its one-position-at-a-time
 // definition: the same kept slots, W values and count, with a row long enough and with a row
 // that overflows (the last slot is overwritten, the count goes on).
-void checkScan(detail::ScanKernel scan, const char* name) {
+void checkScan(detail::ScanKernel scan, detail::DistanceWKernel distanceW, const char* name) {
   SCOPED_TRACE(name);
   std::mt19937 gen(5);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -306,13 +306,13 @@ void checkScan(detail::ScanKernel scan, const char* name) {
   const int self = order[100];
   for (int room : {n + 8, 17}) {
     std::vector<int> slot(static_cast<std::size_t>(room), -1), expSlot(slot);
-    std::vector<double> w(static_cast<std::size_t>(room), -1.0), expW(w);
+    std::vector<double> w(static_cast<std::size_t>(room), -1.0), expW(w), hs(w), expH(w);
     const int last = room - 1;
     int cnt = 0, expCnt = 0;
     // Three segments, as the build's rows of cells: [0, 50), [50, 51), [51, n).
     for (auto [s0, s1] : {std::pair{0, 50}, std::pair{50, 51}, std::pair{51, n}}) {
       cnt = scan(sx.data(), sz.data(), sh.data(), order.data(), s0, s1, xi, zi, hi, rf2, self,
-                 slot.data(), w.data(), cnt, last);
+                 slot.data(), w.data(), hs.data(), cnt, last);
       for (int s = s0; s < s1; ++s) {
         const auto su = static_cast<std::size_t>(s);
         const double dx = xi - sx[su], dz = zi - sz[su];
@@ -320,7 +320,8 @@ void checkScan(detail::ScanKernel scan, const char* name) {
         const double hij = 0.5 * (hi + sh[su]);
         const auto at = static_cast<std::size_t>(std::min(expCnt, last));
         expSlot[at] = s;
-        expW[at] = GaussianKernel::value(r2, hij);
+        expW[at] = r2;
+        expH[at] = hij;
         expCnt += r2 < rf2 * hij * hij && order[su] != self;
       }
     }
@@ -331,7 +332,20 @@ void checkScan(detail::ScanKernel scan, const char* name) {
       const auto ku = static_cast<std::size_t>(k);
       EXPECT_EQ(slot[ku], expSlot[ku]) << "room " << room << " slot " << k;
       EXPECT_EQ(w[ku], expW[ku]) << "room " << room << " slot " << k;
+      EXPECT_EQ(hs[ku], expH[ku]) << "room " << room << " slot " << k;
     }
+    if (cnt > last) continue;
+    // The kept pairs' W from their r2 and h_ij, in place: GaussianKernel::value's bits, and
+    // nothing written past the row (a sentinel there).
+    std::vector<double> wk(w.begin(), w.begin() + cnt);
+    wk.push_back(-7.0);
+    distanceW(wk.data(), hs.data(), cnt, hi);
+    for (int k = 0; k < cnt; ++k) {
+      const auto ku = static_cast<std::size_t>(k);
+      const double exact = GaussianKernel::value(expW[ku], expH[ku]);
+      EXPECT_EQ(std::memcmp(&wk[ku], &exact, sizeof exact), 0) << "room " << room << " W " << k;
+    }
+    EXPECT_EQ(wk[static_cast<std::size_t>(cnt)], -7.0);
   }
 }
 
@@ -379,13 +393,13 @@ TEST(ForceLanes, RowWeightsAreTheListBuildsBitForBit) {
 }
 
 TEST(ForceLanes, ListScanKeepsThePairsOfTheOneAtATimeLoop) {
-  checkScan(detail::scanKernelBaseline(), "baseline");
+  checkScan(detail::scanKernelBaseline(), detail::distanceWKernelBaseline(), "baseline");
 #if defined(__x86_64__) || defined(__i386__)
   if (__builtin_cpu_supports("avx2") && detail::scanKernelAvx2())
-    checkScan(detail::scanKernelAvx2(), "avx2");
+    checkScan(detail::scanKernelAvx2(), detail::distanceWKernelAvx2(), "avx2");
   if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
       __builtin_cpu_supports("avx512vl") && detail::scanKernelAvx512())
-    checkScan(detail::scanKernelAvx512(), "avx512");
+    checkScan(detail::scanKernelAvx512(), detail::distanceWKernelAvx512(), "avx512");
 #endif
 }
 
