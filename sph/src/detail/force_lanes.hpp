@@ -17,6 +17,11 @@ namespace hvi::sph::detail {
 struct LaneArrays {
   const double *x, *z, *vx, *vz, *rho, *c, *h, *mu, *rw, *q;
   const int* obj;
+  //! If not null (the 8-lane kernels; passes.cpp, PackRing): point j's x, z, vx, vz, h, q, mu,
+  //! c in the 64-byte aligned row packed + 8 (j & packMask), valid for the points the row
+  //! reads below packEnd; a block of neighbours with one at or past packEnd is gathered.
+  const double* packed = nullptr;
+  int packMask = 0, packEnd = 0;
 };
 
 //! What a row's force kernel computed of each pair, slot k for the k-th neighbour, for the

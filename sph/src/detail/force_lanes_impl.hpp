@@ -15,6 +15,40 @@ namespace {
 
 #include "detail/lane_ops_impl.hpp"
 
+#if HVI_LANES == 8 && defined(__AVX512F__)
+// Whether the packed rows hold every point of idx[0..8) (LaneArrays::packEnd).
+inline bool packedHolds(const int* idx, int end) {
+  const __m256i v = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(idx));
+  return _mm256_cmplt_epi32_mask(v, _mm256_set1_epi32(end)) == 0xFF;
+}
+
+// Rows idx[0..8) of the packed point data (LaneArrays::packed), transposed: f[k] lane l is
+// field k of point idx[l]. The same values as the 8 gathers.
+inline void loadPacked(const double* pk, int mask, const int* idx, D f[8]) {
+  D r[8];
+  for (int l = 0; l < 8; ++l)
+    __builtin_memcpy(&r[l], pk + 8 * static_cast<std::size_t>(idx[l] & mask), sizeof(D));
+  // Pairs of rows interleaved, then quarters, then halves (an 8 x 8 transpose in 24 shuffles).
+  const I lo2{0, 8, 2, 10, 4, 12, 6, 14}, hi2{1, 9, 3, 11, 5, 13, 7, 15};
+  const I lo4{0, 1, 8, 9, 4, 5, 12, 13}, hi4{2, 3, 10, 11, 6, 7, 14, 15};
+  const I lo8{0, 1, 2, 3, 8, 9, 10, 11}, hi8{4, 5, 6, 7, 12, 13, 14, 15};
+  D t[8], u[8];
+  for (int p = 0; p < 4; ++p) {
+    t[2 * p] = __builtin_shuffle(r[2 * p], r[2 * p + 1], lo2);      // fields 0 2 4 6
+    t[2 * p + 1] = __builtin_shuffle(r[2 * p], r[2 * p + 1], hi2);  // fields 1 3 5 7
+  }
+  for (int q = 0; q < 2; ++q)
+    for (int o = 0; o < 2; ++o) {
+      u[4 * q + o] = __builtin_shuffle(t[4 * q + o], t[4 * q + 2 + o], lo4);      // fields o, 4+o
+      u[4 * q + 2 + o] = __builtin_shuffle(t[4 * q + o], t[4 * q + 2 + o], hi4);  // 2+o, 6+o
+    }
+  for (int k = 0; k < 4; ++k) {
+    f[k] = __builtin_shuffle(u[k], u[4 + k], lo8);
+    f[k + 4] = __builtin_shuffle(u[k], u[4 + k], hi8);
+  }
+}
+#endif
+
 // Half: also the j side's terms of each pair (half lists, planar: no hoop term), each
 // pairTerms(j, i)'s operations on the same operands, so its bits: dx, dv and g change sign
 // exactly, r2, h_ij, Pi and vdg are symmetric, -(mu_i coef)(-g) = (mu_i coef) g.
@@ -42,10 +76,28 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
       idx = pad;
     }
     const I inRow = lane < (I{} + (cnt - k));
-    const D dx = xi - gather(a.x, idx), dz = zi - gather(a.z, idx);
+    // The j side: x, z, vx, vz, h, q, mu, c (c gathered only where the viscosity needs it).
+    D fj[8];
+    bool haveC = false;
+#if HVI_LANES == 8 && defined(__AVX512F__)
+    if (a.packed && packedHolds(idx, a.packEnd)) {
+      loadPacked(a.packed, a.packMask, idx, fj);
+      haveC = true;
+    } else
+#endif
+    {
+      fj[0] = gather(a.x, idx);
+      fj[1] = gather(a.z, idx);
+      fj[2] = gather(a.vx, idx);
+      fj[3] = gather(a.vz, idx);
+      fj[4] = gather(a.h, idx);
+      fj[5] = gather(a.q, idx);
+      fj[6] = gather(a.mu, idx);
+    }
+    const D dx = xi - fj[0], dz = zi - fj[1];
     const D r2 = dx * dx + dz * dz;
     // h_ij = h_i bit for bit when h_j = h_i: the division gives pairTerms' 1 / h_i^2.
-    const D hj = gather(a.h, idx);
+    const D hj = fj[4];
     const D hij = 0.5 * (hi + hj);
     // Within an object h is constant, h_ij = h_i bit for bit and 1 / h_ij^2 is i's own: the
     // division (the costliest lane operation) only for blocks that reach another object's h.
@@ -65,7 +117,7 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
     const I live = inRow & (w != 0.0);
     const D f = -2.0 * ih2 * (w + GK::tail * (9.0 - r2 * ih2) * GK::norm * ih2);
     const D gx = f * dx, gz = f * dz;
-    const D dvx = vxi - gather(a.vx, idx), dvz = vzi - gather(a.vz, idx);
+    const D dvx = vxi - fj[2], dvz = vzi - fj[3];
     if (!Half && out.geom) {
       const PairGeometry& g = *out.geom;
       store(g.dx + k, dx);
@@ -77,7 +129,7 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
       store(g.f + k, f);
     }
     const D vdg = dvx * gx + dvz * gz;
-    const D qj = gather(a.q, idx), muj = gather(a.mu, idx);
+    const D qj = fj[5], muj = fj[6];
     D coef = qi + qj;
     D halfPi = splat(0.0);
     D phij = splat(0.0);
@@ -89,7 +141,8 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
       // skips its two divisions; the others compute it in every lane and mask.
       if (anyLane(approach)) {
         const D ph = hij * vdotx / (r2 + 0.01 * hij * hij);
-        const D pi = (-alpha * (0.5 * (ci + gather(a.c, idx))) * ph + beta * ph * ph) /
+        const D cj = haveC ? fj[7] : gather(a.c, idx);
+        const D pi = (-alpha * (0.5 * (ci + cj)) * ph + beta * ph * ph) /
                      (0.5 * (rhoi + gather(a.rho, idx)));
         phij = select(approach, ph, splat(0.0));
         D rpi = select(approach, pi, splat(0.0));

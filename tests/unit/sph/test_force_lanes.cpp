@@ -199,16 +199,33 @@ TEST(ForceLanes, Avx512LanesGivePairTermsBitForBit) {
 // bit for bit (the pass adds it to j in place of j's own evaluation of the pair), and its own
 // end as before. Same rows and lane conditions as checkPolicy.
 template <bool Viscous, bool Cached, bool Compatible>
-void checkHalfPolicy(RowKernel (*select)(bool, bool, bool, bool, bool), const char* name) {
+void checkHalfPolicy(RowKernel (*select)(bool, bool, bool, bool, bool), const char* name,
+                     bool packed = false) {
   SCOPED_TRACE(::testing::Message() << name << " half, viscous " << Viscous << " cached "
-                                    << Cached << " compatible " << Compatible);
+                                    << Cached << " compatible " << Compatible << " packed "
+                                    << packed);
   const RowKernel kernel = select(false, Viscous, Cached, Compatible, true);
   ASSERT_NE(kernel, nullptr);
   EXPECT_EQ(select(true, Viscous, Cached, Compatible, true), nullptr);  // planar only
   const std::size_t n = 40;
   const Points p = randomPoints(n, false, 23);
   const MonaghanViscosity visc{1.0, 2.0};
-  const LaneArrays la = p.lanes();
+  LaneArrays la = p.lanes();
+  // The packed rows (LaneArrays::packed, the 8-lane kernels): in a ring of 64 rows, holding the
+  // points below 35, so that blocks with a neighbour at 35 or beyond are gathered: both ways
+  // must give pairTerms' bits.
+  std::vector<double> rows(8 * 64 + 8);
+  if (packed) {
+    const auto at = reinterpret_cast<std::uintptr_t>(rows.data());
+    double* base = rows.data() + (8 - at / sizeof(double) % 8) % 8;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double f[8] = {p.x[i], p.z[i], p.vx[i], p.vz[i], p.h[i], p.q[i], p.mu[i], p.c[i]};
+      std::copy(f, f + 8, base + 8 * i);
+    }
+    la.packed = base;
+    la.packMask = 63;
+    la.packEnd = 35;
+  }
   int live = 0, otherObject = 0;
   for (std::size_t i = 0; i < n; ++i) {
     std::vector<int> nb;
@@ -264,15 +281,16 @@ void checkHalfPolicy(RowKernel (*select)(bool, bool, bool, bool, bool), const ch
   EXPECT_GT(otherObject, 0);
 }
 
-void checkHalf(RowKernel (*select)(bool, bool, bool, bool, bool), const char* name) {
-  checkHalfPolicy<true, true, true>(select, name);
-  checkHalfPolicy<true, true, false>(select, name);
-  checkHalfPolicy<true, false, true>(select, name);
-  checkHalfPolicy<true, false, false>(select, name);
-  checkHalfPolicy<false, true, true>(select, name);
-  checkHalfPolicy<false, true, false>(select, name);
-  checkHalfPolicy<false, false, true>(select, name);
-  checkHalfPolicy<false, false, false>(select, name);
+void checkHalf(RowKernel (*select)(bool, bool, bool, bool, bool), const char* name,
+               bool packed = false) {
+  checkHalfPolicy<true, true, true>(select, name, packed);
+  checkHalfPolicy<true, true, false>(select, name, packed);
+  checkHalfPolicy<true, false, true>(select, name, packed);
+  checkHalfPolicy<true, false, false>(select, name, packed);
+  checkHalfPolicy<false, true, true>(select, name, packed);
+  checkHalfPolicy<false, true, false>(select, name, packed);
+  checkHalfPolicy<false, false, true>(select, name, packed);
+  checkHalfPolicy<false, false, false>(select, name, packed);
 }
 
 TEST(ForceLanes, HalfRowKernelsGiveBothEndsBitForBit) {
@@ -281,8 +299,10 @@ TEST(ForceLanes, HalfRowKernelsGiveBothEndsBitForBit) {
   if (__builtin_cpu_supports("avx2") && detail::rowKernelAvx2(false, true, true, true))
     checkHalf(&detail::rowKernelAvx2, "avx2");
   if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
-      __builtin_cpu_supports("avx512vl") && detail::rowKernelAvx512(false, true, true, true))
+      __builtin_cpu_supports("avx512vl") && detail::rowKernelAvx512(false, true, true, true)) {
     checkHalf(&detail::rowKernelAvx512, "avx512");
+    checkHalf(&detail::rowKernelAvx512, "avx512", true);  // the j side from packed rows
+  }
 #endif
 }
 
