@@ -274,14 +274,14 @@ RowKernel laneHalfKernel(bool viscous, bool cached, bool compatible) {
   return k ? k : rowKernelBaseline(false, viscous, cached, compatible, true);
 }
 
-// lanePass on half rows (planar): the same per-pair terms, each pair's computed once.
-// The j side's data of the points a half row reaches, packed 8 per point (x, z, vx, vz, h, q,
+// The j side's data of the points the half rows read, packed 8 per point (x, z, vx, vz, h, q,
 // mu, c: LaneArrays::packed) in a ring of kPackRing points per thread, for the 8-lane kernels:
 // one 64-byte row per neighbour instead of 8 element gathers. Row i reads only points j > i up
 // to its reach (NeighbourList::reach), so as the rows advance the ring packs each point once
-// and drops those behind the row; a row whose reach does not fit, and a block of neighbours
-// with a ghost (past the reals, beyond any reach), read through the gathers. The same values
-// either way, so the same bits. 2 MiB per thread, whatever the particle count.
+// and the oldest fall out of it; a block of neighbours not all in the ring (a ghost, past the
+// reals; a point packed over) reads through the gathers. The same values either way, so the
+// same bits. 2 MiB per thread, whatever the particle count. (The full rows, r-z and the
+// strength pass, keep the gathers: there the ring measured no faster.)
 constexpr int kPackRing = 1 << 15;
 class PackRing {
  public:
@@ -293,40 +293,40 @@ class PackRing {
     const auto at = reinterpret_cast<std::uintptr_t>(storage.data());
     base_ = storage.data() + (8 - at / sizeof(double) % 8) % 8;  // 64-byte aligned
   }
-  // Rows from `lo` on need points [lo, want): packs what is missing and sets la's window
-  // (its end, 0 where the row reads through the gathers).
-  void advance(const PairArrays& a, int lo, int want, LaneArrays& la) {
+  //! Rows from here on read points from `from` on (a new block of rows).
+  void restart(int from) { start_ = end_ = from; }
+  //! The next row reads points below `want`: packs those not yet held and sets la's window.
+  void advance(const PairArrays& a, int want, LaneArrays& la) {
     if (!base_) return;
-    lo_ = std::max(lo_, lo);
-    if (want - lo_ > kPackRing) {
-      la.packEnd = 0;
-      return;
+    if (want > end_) {
+      const int from = std::max(end_, want - kPackRing);
+      if (from > end_) start_ = from;  // a jump: nothing before it is held
+      for (int p = from; p < want; ++p) {
+        const auto i = static_cast<std::size_t>(p);
+        double* r = base_ + 8 * static_cast<std::size_t>(p & (kPackRing - 1));
+        r[0] = a.x[i];
+        r[1] = a.z[i];
+        r[2] = a.vx[i];
+        r[3] = a.vz[i];
+        r[4] = a.h[i];
+        r[5] = a.q[i];
+        r[6] = a.mu[i];
+        r[7] = a.c[i];
+      }
+      end_ = want;
     }
-    for (int p = std::max(end_, lo_); p < want; ++p) {
-      const auto i = static_cast<std::size_t>(p);
-      double* r = base_ + 8 * static_cast<std::size_t>(p & (kPackRing - 1));
-      r[0] = a.x[i];
-      r[1] = a.z[i];
-      r[2] = a.vx[i];
-      r[3] = a.vz[i];
-      r[4] = a.h[i];
-      r[5] = a.q[i];
-      r[6] = a.mu[i];
-      r[7] = a.c[i];
-    }
-    end_ = std::max(end_, want);
     la.packed = base_;
     la.packMask = kPackRing - 1;
+    la.packBegin = std::max(start_, end_ - kPackRing);
     la.packEnd = end_;
   }
-  // A new block of rows (another thread may have run the rows between).
-  void restart(int lo) { lo_ = end_ = lo; }
 
  private:
   double* base_ = nullptr;
-  int lo_ = 0, end_ = 0;
+  int start_ = 0, end_ = 0;
 };
 
+// lanePass on half rows (planar): the same per-pair terms, each pair's computed once.
 template <bool Viscous, bool Cached, bool Compatible>
 void halfPass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
               const MonaghanViscosity& visc, const AxisCorrection*, const RingScale*,
@@ -361,12 +361,12 @@ void halfPass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
       const long b0 = b * acc.bs, b1 = std::min(nr, b0 + acc.bs);
       double* sp[F];
       const std::size_t span = acc.begin(b, b0, b1, sp);
-      ring.restart(static_cast<int>(b0));
+      ring.restart(static_cast<int>(b0) + 1);
       for (long il = b0; il < b1; ++il) {
         const std::size_t i = static_cast<std::size_t>(il);
         const int cnt = list.count[i];
         const int* nbr = list.index.data() + list.start[i];
-        ring.advance(a, static_cast<int>(il) + 1, list.reach[i], lr);
+        ring.advance(a, list.reach[i], lr);
         kernel(lr, i, nbr, nullptr, cnt, visc.alpha, visc.beta, t);
         double sax = 0.0, saz = 0.0, sde = 0.0, sdrho = 0.0, phi = 0.0;
         for (int k = 0; k < cnt; ++k) {
@@ -423,12 +423,12 @@ void halfRemainder(const PairArrays& a, std::size_t nReal, const NeighbourList& 
       const long b0 = b * acc.bs, b1 = std::min(nr, b0 + acc.bs);
       double* sp[1];
       const std::size_t span = acc.begin(b, b0, b1, sp);
-      ring.restart(static_cast<int>(b0));
+      ring.restart(static_cast<int>(b0) + 1);
       for (long il = b0; il < b1; ++il) {
         const std::size_t i = static_cast<std::size_t>(il);
         const int cnt = list.count[i];
         const int* nbr = list.index.data() + list.start[i];
-        ring.advance(a, static_cast<int>(il) + 1, list.reach[i], lr);
+        ring.advance(a, list.reach[i], lr);
         kernel(lr, i, nbr, nullptr, cnt, visc.alpha, visc.beta, t);
         // remainderRow's sum for i; for j its own pair datum times da_j - da_i.
         const double dxi = dax[i], dzi = daz[i];

@@ -18,10 +18,10 @@ struct LaneArrays {
   const double *x, *z, *vx, *vz, *rho, *c, *h, *mu, *rw, *q;
   const int* obj;
   //! If not null (the 8-lane kernels; passes.cpp, PackRing): point j's x, z, vx, vz, h, q, mu,
-  //! c in the 64-byte aligned row packed + 8 (j & packMask), valid for the points the row
-  //! reads below packEnd; a block of neighbours with one at or past packEnd is gathered.
+  //! c in the 64-byte aligned row packed + 8 (j & packMask), for packBegin <= j < packEnd; a
+  //! block of neighbours with one outside is gathered.
   const double* packed = nullptr;
-  int packMask = 0, packEnd = 0;
+  int packMask = 0, packBegin = 0, packEnd = 0;
 };
 
 //! What a row's force kernel computed of each pair, slot k for the k-th neighbour, for the

@@ -16,10 +16,11 @@ namespace {
 #include "detail/lane_ops_impl.hpp"
 
 #if HVI_LANES == 8 && defined(__AVX512F__)
-// Whether the packed rows hold every point of idx[0..8) (LaneArrays::packEnd).
-inline bool packedHolds(const int* idx, int end) {
+// Whether the packed rows hold every point of idx[0..8) (LaneArrays::packBegin, packEnd).
+inline bool packedHolds(const int* idx, int begin, int end) {
   const __m256i v = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(idx));
-  return _mm256_cmplt_epi32_mask(v, _mm256_set1_epi32(end)) == 0xFF;
+  return (_mm256_cmplt_epi32_mask(v, _mm256_set1_epi32(end)) &
+          _mm256_cmpge_epi32_mask(v, _mm256_set1_epi32(begin))) == 0xFF;
 }
 
 // Rows idx[0..8) of the packed point data (LaneArrays::packed), transposed: f[k] lane l is
@@ -80,7 +81,7 @@ void row(const LaneArrays& a, std::size_t i, const int* nb, const double* wc, in
     D fj[8];
     bool haveC = false;
 #if HVI_LANES == 8 && defined(__AVX512F__)
-    if (a.packed && packedHolds(idx, a.packEnd)) {
+    if (a.packed && packedHolds(idx, a.packBegin, a.packEnd)) {
       loadPacked(a.packed, a.packMask, idx, fj);
       haveC = true;
     } else

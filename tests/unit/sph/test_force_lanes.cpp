@@ -78,14 +78,37 @@ Points randomPoints(std::size_t n, bool rz, std::uint32_t seed) {
   return p;
 }
 
+// p's lanes, with `packed` also the packed rows the 8-lane kernels read instead of gathers
+// (LaneArrays::packed): in a ring of 64 rows (in `rows`), holding the points 2 to 34, so that
+// blocks with a neighbour below 2 or at 35 or beyond are gathered; both ways must give
+// pairTerms' bits.
+LaneArrays lanesOf(const Points& p, bool packed, std::vector<double>& rows) {
+  LaneArrays la = p.lanes();
+  if (!packed) return la;
+  rows.assign(8 * 64 + 8, 0.0);
+  const auto at = reinterpret_cast<std::uintptr_t>(rows.data());
+  double* base = rows.data() + (8 - at / sizeof(double) % 8) % 8;
+  for (std::size_t i = 0; i < p.x.size(); ++i) {
+    const double f[8] = {p.x[i], p.z[i], p.vx[i], p.vz[i], p.h[i], p.q[i], p.mu[i], p.c[i]};
+    std::copy(f, f + 8, base + 8 * i);
+  }
+  la.packed = base;
+  la.packMask = 63;
+  la.packBegin = 2;
+  la.packEnd = 35;
+  return la;
+}
+
 template <bool RZ, bool Viscous, bool Cached, bool Compatible>
-void checkPolicy(RowKernel kernel, const char* name) {
+void checkPolicy(RowKernel kernel, const char* name, bool packed) {
   SCOPED_TRACE(::testing::Message() << name << " rz " << RZ << " viscous " << Viscous
-                                    << " cached " << Cached << " compatible " << Compatible);
+                                    << " cached " << Cached << " compatible " << Compatible
+                                    << " packed " << packed);
   const std::size_t n = 40;  // randomPoints' last 16 are two 8-lane blocks at rest
   const Points p = randomPoints(n, RZ, 17);
   const MonaghanViscosity visc{1.0, 2.0};
-  const LaneArrays la = p.lanes();
+  std::vector<double> rows;
+  const LaneArrays la = lanesOf(p, packed, rows);
   int rowsWithZeroW = 0, approaching = 0, receding = 0;
   for (std::size_t i = 0; i < n; ++i) {
     // Rows of every length 1 .. n-1 (lane counts 2 and 8: every remainder).
@@ -152,11 +175,12 @@ void checkPolicy(RowKernel kernel, const char* name) {
 }
 
 template <bool RZ, bool Viscous>
-void checkAll(RowKernel (*select)(bool, bool, bool, bool, bool), const char* name) {
-  checkPolicy<RZ, Viscous, true, true>(select(RZ, Viscous, true, true, false), name);
-  checkPolicy<RZ, Viscous, true, false>(select(RZ, Viscous, true, false, false), name);
-  checkPolicy<RZ, Viscous, false, true>(select(RZ, Viscous, false, true, false), name);
-  checkPolicy<RZ, Viscous, false, false>(select(RZ, Viscous, false, false, false), name);
+void checkAll(RowKernel (*select)(bool, bool, bool, bool, bool), const char* name,
+              bool packed = false) {
+  checkPolicy<RZ, Viscous, true, true>(select(RZ, Viscous, true, true, false), name, packed);
+  checkPolicy<RZ, Viscous, true, false>(select(RZ, Viscous, true, false, false), name, packed);
+  checkPolicy<RZ, Viscous, false, true>(select(RZ, Viscous, false, true, false), name, packed);
+  checkPolicy<RZ, Viscous, false, false>(select(RZ, Viscous, false, false, false), name, packed);
 }
 
 TEST(ForceLanes, BaselineLanesGivePairTermsBitForBit) {
@@ -189,10 +213,12 @@ TEST(ForceLanes, Avx512LanesGivePairTermsBitForBit) {
 #endif
   if (!cpu || !detail::rowKernelAvx512(false, true, true, true))
     GTEST_SKIP() << "no AVX-512 on this CPU or compiler: the baseline lanes run";
-  checkAll<false, true>(&detail::rowKernelAvx512, "avx512");
-  checkAll<false, false>(&detail::rowKernelAvx512, "avx512");
-  checkAll<true, true>(&detail::rowKernelAvx512, "avx512");
-  checkAll<true, false>(&detail::rowKernelAvx512, "avx512");
+  for (const bool packed : {false, true}) {
+    checkAll<false, true>(&detail::rowKernelAvx512, "avx512", packed);
+    checkAll<false, false>(&detail::rowKernelAvx512, "avx512", packed);
+    checkAll<true, true>(&detail::rowKernelAvx512, "avx512", packed);
+    checkAll<true, false>(&detail::rowKernelAvx512, "avx512", packed);
+  }
 }
 
 // Half rows (planar): the kernel also gives each pair's other end, which must be pairTerms(j, i)
@@ -210,22 +236,8 @@ void checkHalfPolicy(RowKernel (*select)(bool, bool, bool, bool, bool), const ch
   const std::size_t n = 40;
   const Points p = randomPoints(n, false, 23);
   const MonaghanViscosity visc{1.0, 2.0};
-  LaneArrays la = p.lanes();
-  // The packed rows (LaneArrays::packed, the 8-lane kernels): in a ring of 64 rows, holding the
-  // points below 35, so that blocks with a neighbour at 35 or beyond are gathered: both ways
-  // must give pairTerms' bits.
-  std::vector<double> rows(8 * 64 + 8);
-  if (packed) {
-    const auto at = reinterpret_cast<std::uintptr_t>(rows.data());
-    double* base = rows.data() + (8 - at / sizeof(double) % 8) % 8;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double f[8] = {p.x[i], p.z[i], p.vx[i], p.vz[i], p.h[i], p.q[i], p.mu[i], p.c[i]};
-      std::copy(f, f + 8, base + 8 * i);
-    }
-    la.packed = base;
-    la.packMask = 63;
-    la.packEnd = 35;
-  }
+  std::vector<double> rows;
+  const LaneArrays la = lanesOf(p, packed, rows);
   int live = 0, otherObject = 0;
   for (std::size_t i = 0; i < n; ++i) {
     std::vector<int> nb;
