@@ -519,33 +519,28 @@ bool halfListsAvailable(cases::Kernel kernel, bool rz) {
   return kernel == cases::Kernel::Gaussian && !rz && laneWidth() >= 4;
 }
 
+// The widest build of a kernel that the CPU (laneWidth) and the compiler have.
+template <class F>
+F widest(F (*avx512)(), F (*avx2)(), F (*baseline)()) {
+  F k = nullptr;
+  if (laneWidth() >= 8) k = avx512();
+  if (!k && laneWidth() >= 4) k = avx2();
+  return k ? k : baseline();
+}
+
 RowWKernel rowWKernel() {
-  static const RowWKernel k = [] {
-    RowWKernel r = nullptr;
-    if (laneWidth() >= 8) r = rowWKernelAvx512();
-    if (!r && laneWidth() >= 4) r = rowWKernelAvx2();
-    return r ? r : rowWKernelBaseline();
-  }();
+  static const RowWKernel k = widest(&rowWKernelAvx512, &rowWKernelAvx2, &rowWKernelBaseline);
   return k;
 }
 
 ScanKernel scanKernel() {
-  static const ScanKernel k = [] {
-    ScanKernel s = nullptr;
-    if (laneWidth() >= 8) s = scanKernelAvx512();
-    if (!s && laneWidth() >= 4) s = scanKernelAvx2();
-    return s ? s : scanKernelBaseline();
-  }();
+  static const ScanKernel k = widest(&scanKernelAvx512, &scanKernelAvx2, &scanKernelBaseline);
   return k;
 }
 
 DistanceWKernel distanceWKernel() {
-  static const DistanceWKernel k = [] {
-    DistanceWKernel d = nullptr;
-    if (laneWidth() >= 8) d = distanceWKernelAvx512();
-    if (!d && laneWidth() >= 4) d = distanceWKernelAvx2();
-    return d ? d : distanceWKernelBaseline();
-  }();
+  static const DistanceWKernel k =
+      widest(&distanceWKernelAvx512, &distanceWKernelAvx2, &distanceWKernelBaseline);
   return k;
 }
 
