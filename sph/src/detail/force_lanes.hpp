@@ -56,9 +56,9 @@ using RowKernel = void (*)(const LaneArrays& a, std::size_t i, const int* nb, co
 
 //! The list build's scan of the grid's sorted positions [s0, s1) around (xi, zi, hi): each
 //! position s is written at slot[min(cnt, last)] and cnt advances if |x - x_s| < sqrt(rf2) h_is
-//! (h_is = (hi + sh[s]) / 2, compared as rf2 h_is^2) and order[s] != self; with `w` (not null)
-//! with `r2` (not null) its squared distance and h_is go to r2[min(cnt, last)] and
-//! hs[min(cnt, last)]. Returns cnt. The same slots, values and count as that loop written one
+//! (h_is = (hi + sh[s]) / 2, compared as rf2 h_is^2) and order[s] != self; with `r2` (not
+//! null) its squared distance and h_is go to r2[min(cnt, last)] and hs[min(cnt, last)] (the
+//! Gaussian's W follow from them: DistanceWKernel). Returns cnt. The same slots, values and count as that loop written one
 //! position at a time (the distances in lanes).
 using ScanKernel = int (*)(const double* sx, const double* sz, const double* sh, const int* order,
                            int s0, int s1, double xi, double zi, double hi, double rf2, int self,

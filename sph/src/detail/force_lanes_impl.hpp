@@ -251,7 +251,7 @@ int scan(const double* sx, const double* sz, const double* sh, const int* order,
     const I near = (r2 < rf2 * hij * hij) & valid;
 #if HVI_LANES == 8 && defined(__AVX512F__)
     if (cnt + L <= last + 1 && s + L <= s1) {
-      // The kept positions (and their W) packed to the front of a register, stored at the
+      // The kept positions (and their r2, h_ij) packed to the front of a register, stored at the
       // row's end: the lanes past them land in the row's spare slots, as the one-at-a-time
       // loop's rejected positions do.
       const __m256i ord = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(order + s));
