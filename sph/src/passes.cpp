@@ -332,11 +332,12 @@ void halfPass(const PairArrays& a, std::size_t nReal, const NeighbourList& list,
               const MonaghanViscosity& visc, const AxisCorrection*, const RingScale*,
               const Rates& out) {
   static const RowKernel kernel = laneHalfKernel(Viscous, Cached, Compatible);
+  // Only the AVX-512 kernels read packed rows (a CPU with AVX-512 and a build without runs AVX2).
+  static const bool pack = kernel == rowKernelAvx512(false, Viscous, Cached, Compatible, true);
   constexpr int F = Cached ? (Viscous ? 5 : 4) : 3;
   const LaneArrays la{a.x.data(),  a.z.data(), a.vx.data(), a.vz.data(), a.rho.data(),
                       a.c.data(),  a.h.data(), a.mu.data(), a.rw.data(), a.q.data(),
                       a.obj.data()};
-  const bool pack = laneWidth() >= 8;
   const long nr = static_cast<long>(nReal);
   const long nb = halfBlocks(list, nr);
   HalfAcc<F, Cached && Viscous> acc{{}, list, nr, nb, halfBlockSize(nr)};
@@ -396,10 +397,10 @@ void halfRemainder(const PairArrays& a, std::size_t nReal, const NeighbourList& 
                    const MonaghanViscosity& visc, const double* dax, const double* daz,
                    const double*, double halfDt, double* de) {
   static const RowKernel kernel = laneHalfKernel(Viscous, false, true);
+  static const bool pack = kernel == rowKernelAvx512(false, Viscous, false, true, true);
   const LaneArrays la{a.x.data(),  a.z.data(), a.vx.data(), a.vz.data(), a.rho.data(),
                       a.c.data(),  a.h.data(), a.mu.data(), a.rw.data(), a.q.data(),
                       a.obj.data()};
-  const bool pack = laneWidth() >= 8;
   const long nr = static_cast<long>(nReal);
   const long nb = halfBlocks(list, nr);
   if (list.sums.size() < nReal) list.sums.resize(nReal);

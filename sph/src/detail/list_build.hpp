@@ -104,7 +104,7 @@ void buildList(const double* x, const double* z, const double* h, const double* 
   {
     std::vector<double> scratch(cacheW || !needW ? 0 : half ? list.scanStride : stride);
     // The Gaussian's h_ij of the kept pairs, beside their r2 (in the W row) until distanceW.
-    std::vector<double> hScratch(kGauss && needW ? (half ? list.scanStride : stride) : 0);
+    std::vector<double> hScratch(lanes && kGauss && needW ? (half ? list.scanStride : stride) : 0);
     std::vector<int> fullRow(half ? list.scanStride : 0);
 #pragma omp for schedule(static) reduction(max : overflow, fullNeed)
     for (long il = 0; il < nr; ++il) {
